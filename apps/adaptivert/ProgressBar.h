@@ -1,0 +1,31 @@
+// ProgressBar: progress on stderr. On a terminal a bar redrawn in place; otherwise one plain
+// line per stage and per 10%, so logs stay readable. Feeds from art::Progress callbacks.
+#ifndef adaptivert_ProgressBar_h
+#define adaptivert_ProgressBar_h
+
+#include "Progress.h"
+
+#include <chrono>
+#include <string>
+
+namespace cli
+{
+class ProgressBar
+{
+public:
+  explicit ProgressBar(bool quiet = false);
+  ~ProgressBar();
+  /// A callback for art::Progress.
+  art::Progress::Callback Callback();
+  void Update(double fraction, const std::string& stage);
+  void Finish();
+
+private:
+  bool Quiet, Tty, Open = false;
+  std::string LastStage;
+  int LastTenth = -1;
+  std::chrono::steady_clock::time_point Start, LastDraw;
+};
+} // namespace cli
+
+#endif

@@ -1,0 +1,200 @@
+// adaptivert info FILE...: what a volume, surface or mesh holds.
+#include "Command.h"
+#include "DataLoader.h"
+#include "Error.h"
+#include "Json.h"
+
+#include <vtkCellData.h>
+#include <vtkCellTypes.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <cstdarg>
+#include <cstdio>
+#include <map>
+
+namespace
+{
+std::string Grouped(long long n)
+{
+  std::string s = std::to_string(n < 0 ? -n : n), o;
+  for (size_t i = 0; i < s.size(); ++i)
+  {
+    o += s[i];
+    if ((s.size() - 1 - i) % 3 == 0 && i + 1 < s.size())
+    {
+      o += ',';
+    }
+  }
+  return (n < 0 ? "-" : "") + o;
+}
+
+// printf into a string, so the same code serves the text and the --json output.
+void Out(std::string& text, const char* fmt, ...) __attribute__((format(printf, 2, 3)));
+void Out(std::string& text, const char* fmt, ...)
+{
+  char buf[1024];
+  va_list ap;
+  va_start(ap, fmt);
+  std::vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  text += buf;
+}
+
+std::string Bounds(vtkDataSet* ds)
+{
+  double b[6];
+  ds->GetBounds(b);
+  char s[200];
+  std::snprintf(s, sizeof s, "x [%g, %g]  y [%g, %g]  z [%g, %g]", b[0], b[1], b[2], b[3], b[4], b[5]);
+  return s;
+}
+
+std::string ArrayList(vtkFieldData* fd)
+{
+  std::string s;
+  for (int i = 0; i < fd->GetNumberOfArrays(); ++i)
+  {
+    vtkAbstractArray* a = fd->GetAbstractArray(i);
+    s += std::string(i ? ", " : "") + (a->GetName() ? a->GetName() : "(unnamed)");
+    if (auto* da = vtkDataArray::SafeDownCast(a))
+    {
+      double r[2];
+      da->GetRange(r, -1);
+      char b[80];
+      std::snprintf(b, sizeof b, " [%s x%d, %g..%g]", da->GetDataTypeAsString(),
+        da->GetNumberOfComponents(), r[0], r[1]);
+      s += b;
+    }
+  }
+  return s.empty() ? "none" : s;
+}
+
+cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind kind, std::string& text)
+{
+  cli::Json j;
+  j.Set("file", path).Set("kind", art::KindName(kind));
+  auto* ds = vtkDataSet::SafeDownCast(obj);
+  double b[6];
+  ds->GetBounds(b);
+  j.Set("bounds", std::vector<double>(b, b + 6));
+  Out(text, "%s: %s\n", path.c_str(), art::KindName(kind));
+  if (auto* img = vtkImageData::SafeDownCast(obj))
+  {
+    int d[3];
+    img->GetDimensions(d);
+    const double* sp = img->GetSpacing();
+    const double* o = img->GetOrigin();
+    vtkDataArray* s = img->GetPointData()->GetScalars();
+    double r[2];
+    s->GetRange(r, 0);
+    Out(text, "  dimensions   %d x %d x %d (%s voxels)\n", d[0], d[1], d[2],
+      Grouped(static_cast<long long>(d[0]) * d[1] * d[2]).c_str());
+    Out(text, "  spacing      %g x %g x %g\n", sp[0], sp[1], sp[2]);
+    Out(text, "  origin       %g, %g, %g\n", o[0], o[1], o[2]);
+    Out(text, "  bounds       %s\n", Bounds(img).c_str());
+    Out(text, "  scalars      %s, %d component%s, range %g .. %g\n", s->GetDataTypeAsString(),
+      s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "", r[0], r[1]);
+    j.Set("dimensions", std::vector<double>{ double(d[0]), double(d[1]), double(d[2]) })
+      .Set("spacing", std::vector<double>(sp, sp + 3))
+      .Set("origin", std::vector<double>(o, o + 3))
+      .Set("scalar_type", s->GetDataTypeAsString())
+      .Set("components", s->GetNumberOfComponents())
+      .Set("range", std::vector<double>{ r[0], r[1] });
+  }
+  else if (auto* pd = vtkPolyData::SafeDownCast(obj))
+  {
+    long long tris = 0, other = 0;
+    vtkCellArray* polys = pd->GetPolys();
+    for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+    {
+      (polys->GetCellSize(c) == 3 ? tris : other)++;
+    }
+    Out(text, "  points       %s\n", Grouped(pd->GetNumberOfPoints()).c_str());
+    Out(text, "  polygons     %s (%s triangles, %s other)\n", Grouped(pd->GetNumberOfPolys()).c_str(),
+      Grouped(tris).c_str(), Grouped(other).c_str());
+    if (pd->GetNumberOfStrips() || pd->GetNumberOfLines() || pd->GetNumberOfVerts())
+    {
+      Out(text, "  also         %s strips, %s lines, %s vertices\n", Grouped(pd->GetNumberOfStrips()).c_str(),
+        Grouped(pd->GetNumberOfLines()).c_str(), Grouped(pd->GetNumberOfVerts()).c_str());
+    }
+    Out(text, "  bounds       %s\n", Bounds(pd).c_str());
+    Out(text, "  point data   %s\n", ArrayList(pd->GetPointData()).c_str());
+    j.Set("points", static_cast<long long>(pd->GetNumberOfPoints()))
+      .Set("polygons", static_cast<long long>(pd->GetNumberOfPolys()))
+      .Set("triangles", tris)
+      .Set("strips", static_cast<long long>(pd->GetNumberOfStrips()));
+  }
+  else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(obj))
+  {
+    std::map<std::string, long long> types;
+    for (vtkIdType c = 0; c < ug->GetNumberOfCells(); ++c)
+    {
+      types[vtkCellTypes::GetClassNameFromTypeId(ug->GetCellType(c))]++;
+    }
+    Out(text, "  points       %s\n", Grouped(ug->GetNumberOfPoints()).c_str());
+    Out(text, "  cells        %s\n", Grouped(ug->GetNumberOfCells()).c_str());
+    cli::Json jt;
+    for (const auto& [name, n] : types)
+    {
+      Out(text, "    %-12s %s\n", name.c_str(), Grouped(n).c_str());
+      jt.Set(name, n);
+    }
+    Out(text, "  bounds       %s\n", Bounds(ug).c_str());
+    Out(text, "  point data   %s\n", ArrayList(ug->GetPointData()).c_str());
+    Out(text, "  cell data    %s\n", ArrayList(ug->GetCellData()).c_str());
+    Out(text, "  field data   %s\n", ArrayList(ug->GetFieldData()).c_str());
+    j.Set("points", static_cast<long long>(ug->GetNumberOfPoints()))
+      .Set("cells", static_cast<long long>(ug->GetNumberOfCells()))
+      .Set("cell_types", jt);
+  }
+  return j;
+}
+
+void Declare(cli::Options&) {}
+
+int Run(const cli::Options& o)
+{
+  if (o.Positional().empty())
+  {
+    throw cli::UsageError("needs at least one FILE");
+  }
+  std::vector<cli::Json> all;
+  int failures = 0;
+  for (const auto& path : o.Positional())
+  {
+    try
+    {
+      art::DataKind kind;
+      auto obj = art::Load(path, &kind);
+      std::string text;
+      all.push_back(Describe(path, obj, kind, text));
+      if (!o.Flag("json"))
+      {
+        std::fputs(text.c_str(), stdout);
+      }
+    }
+    catch (const art::Error& e)
+    {
+      std::fprintf(stderr, "adaptivert: %s\n", e.what());
+      ++failures;
+    }
+  }
+  if (o.Flag("json"))
+  {
+    cli::Json out;
+    out.Set("files", all);
+    std::printf("%s\n", out.Str().c_str());
+  }
+  return failures ? cli::ExitFailure : cli::ExitOk;
+}
+
+cli::Registrar reg({ "info", "describe volumes, surfaces and meshes (sizes, types, ranges, bounds)",
+  "adaptivert info [options] FILE...",
+  "  adaptivert info data/ct-head-128.mha\n  adaptivert info --json data/am_underworks.ply mesh.vtu\n",
+  Declare, Run });
+} // namespace

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# AdaptiveRT set-up: installs the Debian packages it needs (only those missing, so a second run
+# is fast), configures and builds in Release with ninja, then optionally runs something.
+#   cmake/setup.sh          set up and build
+#   cmake/setup.sh demo     ... then run the main job on the embedded default data
+#   cmake/setup.sh test     ... then run every test through ctest (under Xvfb when no display)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(
+  g++ cmake ninja-build pkg-config ccache git
+  libvtk9-dev python3-vtk9 python3-matplotlib
+  libcgal-dev libtet1.5-dev libopenimageio-dev libeigen3-dev libtbb-dev
+  libgtest-dev libembree-dev
+  xvfb xauth
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+    sudo=sudo
+  fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
+
+if [ ! -f build/build.ninja ]; then
+  cmake --preset release >&2
+fi
+cmake --build --preset release >&2
+
+case "${1:-}" in
+  "") ;;
+  demo)
+    build/bin/adaptivert demo ;;
+  test)
+    run=()
+    if [ -z "${DISPLAY:-}" ]; then run=(xvfb-run -a -s "-screen 0 1280x1024x24"); fi
+    "${run[@]}" ctest --preset release ;;
+  *)
+    echo "setup: unknown action '$1' (use demo or test)" >&2; exit 2 ;;
+esac

@@ -1,0 +1,81 @@
+#include "Camera.h"
+
+#include <vtkCamera.h>
+#include <vtkMath.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace art
+{
+Camera Camera::FromVTK(vtkCamera* cam, int width, int height)
+{
+  Camera c;
+  c.W = std::max(1, width);
+  c.H = std::max(1, height);
+  c.Eye = Vec3(cam->GetPosition());
+  const Vec3 focal(cam->GetFocalPoint());
+  c.Fwd = Normalize(focal - c.Eye);
+  c.Right = Normalize(Cross(c.Fwd, Vec3(cam->GetViewUp())));
+  c.Up = Cross(c.Right, c.Fwd);
+  c.Parallel = cam->GetParallelProjection() != 0;
+  const double aspect = double(c.W) / double(c.H);
+  if (c.Parallel)
+  {
+    c.HalfH = cam->GetParallelScale();
+    c.HalfW = c.HalfH * aspect;
+  }
+  else
+  {
+    const double half = std::tan(vtkMath::RadiansFromDegrees(cam->GetViewAngle()) * 0.5);
+    if (cam->GetUseHorizontalViewAngle())
+    {
+      c.HalfW = half;
+      c.HalfH = half / aspect;
+    }
+    else
+    {
+      c.HalfH = half;
+      c.HalfW = half * aspect;
+    }
+  }
+  return c;
+}
+
+void Camera::Frame(vtkCamera* cam, const Box3& b, double azimuth, double elevation, double zoom)
+{
+  const Vec3 centre = b.Center();
+  const double radius = std::max(0.5 * b.Diagonal(), 1e-12);
+  const Vec3 dir = Normalize(Vec3(cam->GetDirectionOfProjection()));
+  const double halfAngle = vtkMath::RadiansFromDegrees(cam->GetViewAngle()) * 0.5;
+  const double dist = radius / std::sin(halfAngle);
+  const Vec3 eye = centre - dir * dist;
+  cam->SetFocalPoint(centre.x, centre.y, centre.z);
+  cam->SetPosition(eye.x, eye.y, eye.z);
+  cam->SetParallelScale(radius);
+  cam->Azimuth(azimuth);
+  cam->Elevation(elevation);
+  cam->OrthogonalizeViewUp();
+  cam->Zoom(zoom);
+  cam->SetClippingRange(std::max(dist - 2 * radius, 1e-3 * dist), dist + 2 * radius);
+}
+
+Ray Camera::Generate(double px, double py) const
+{
+  // NDC in [-1, 1], y up; pixel centres sit at +0.5.
+  const double sx = (2.0 * (px + 0.5) / W - 1.0) * HalfW;
+  const double sy = (1.0 - 2.0 * (py + 0.5) / H) * HalfH;
+  Ray r;
+  if (Parallel)
+  {
+    r.org = Eye + Right * sx + Up * sy;
+    r.dir = Fwd;
+  }
+  else
+  {
+    r.org = Eye;
+    r.dir = Normalize(Fwd + Right * sx + Up * sy);
+  }
+  return r;
+}
+} // namespace art

@@ -1,0 +1,45 @@
+// Camera: pinhole (perspective) or parallel projection, made from a vtkCamera so that the batch
+// renderer and a VTK window see the same view. Pixel (0,0) is the top-left pixel, as in files.
+#ifndef art_Camera_h
+#define art_Camera_h
+
+#include "AdaptiveRTCoreModule.h"
+#include "Box3.h"
+#include "Ray.h"
+
+class vtkCamera;
+
+namespace art
+{
+class ADAPTIVERTCORE_EXPORT Camera
+{
+public:
+  Camera() = default;
+
+  /// The view of `cam` for an image of width x height pixels (VTK's vertical view angle,
+  /// or the horizontal one when the camera says so; parallel scale for parallel projection).
+  static Camera FromVTK(vtkCamera* cam, int width, int height);
+
+  /// Points `cam` at `bounds` from the given direction the way vtkRenderer::ResetCamera does,
+  /// then applies azimuth and elevation (degrees) about the focal point and a zoom factor.
+  static void Frame(vtkCamera* cam, const Box3& bounds, double azimuth = 0.0,
+    double elevation = 0.0, double zoom = 1.0);
+
+  /// The ray through the centre of pixel (px, py); fractional positions give sub-pixel rays.
+  Ray Generate(double px, double py) const;
+
+  int Width() const { return W; }
+  int Height() const { return H; }
+  bool IsParallel() const { return Parallel; }
+  const Vec3& Position() const { return Eye; }
+  const Vec3& Forward() const { return Fwd; }
+
+private:
+  Vec3 Eye, Fwd{ 0, 0, -1 }, Right{ 1, 0, 0 }, Up{ 0, 1, 0 };
+  double HalfW = 1.0, HalfH = 1.0; // image-plane half extents at distance 1 (or world units)
+  int W = 1, H = 1;
+  bool Parallel = false;
+};
+} // namespace art
+
+#endif

@@ -1,0 +1,72 @@
+#include "Camera.h"
+
+#include <vtkCamera.h>
+#include <vtkNew.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using art::Vec3;
+
+TEST(Camera, CentreRayFollowsTheViewDirection)
+{
+  vtkNew<vtkCamera> vc;
+  vc->SetPosition(1, 2, 10);
+  vc->SetFocalPoint(1, 2, 0);
+  vc->SetViewUp(0, 1, 0);
+  vc->SetViewAngle(60);
+  // Odd size: the centre pixel's ray is exactly the view direction.
+  const auto cam = art::Camera::FromVTK(vc, 101, 51);
+  const art::Ray r = cam.Generate(50, 25);
+  EXPECT_NEAR(r.dir.x, 0, 1e-15);
+  EXPECT_NEAR(r.dir.y, 0, 1e-15);
+  EXPECT_NEAR(r.dir.z, -1, 1e-15);
+  EXPECT_EQ(r.org, Vec3(1, 2, 10));
+}
+
+TEST(Camera, EdgeRaysSpanTheVerticalViewAngle)
+{
+  vtkNew<vtkCamera> vc;
+  vc->SetViewAngle(60);
+  const auto cam = art::Camera::FromVTK(vc, 200, 100);
+  // The top edge of the image (py = -0.5 is the top boundary) is 30 degrees above the axis.
+  const art::Ray top = cam.Generate(99.5, -0.5);
+  EXPECT_NEAR(std::atan2(top.dir.y, -top.dir.z) * 180 / M_PI, 30.0, 1e-9);
+  // Row 0 is the top: its rays point up.
+  EXPECT_GT(cam.Generate(100, 0).dir.y, 0);
+  // Aspect 2: the right edge is at atan(2 tan 30).
+  const art::Ray right = cam.Generate(199.5, 49.5);
+  EXPECT_NEAR(std::atan2(right.dir.x, -right.dir.z), std::atan(2 * std::tan(M_PI / 6)), 1e-9);
+}
+
+TEST(Camera, ParallelProjectionRaysShareDirection)
+{
+  vtkNew<vtkCamera> vc;
+  vc->ParallelProjectionOn();
+  vc->SetParallelScale(3);
+  const auto cam = art::Camera::FromVTK(vc, 10, 10);
+  const art::Ray a = cam.Generate(-0.5, -0.5), b = cam.Generate(9.5, 9.5);
+  EXPECT_EQ(a.dir, b.dir);
+  EXPECT_NEAR(a.org.x, -3, 1e-12);
+  EXPECT_NEAR(a.org.y, 3, 1e-12);
+  EXPECT_NEAR(b.org.x, 3, 1e-12);
+}
+
+TEST(Camera, FrameShowsTheWholeBox)
+{
+  vtkNew<vtkCamera> vc;
+  const art::Box3 box({ -1, -2, -3 }, { 5, 4, 3 });
+  art::Camera::Frame(vc, box, 30, 20, 1.0);
+  const Vec3 f(vc->GetFocalPoint());
+  EXPECT_NEAR(Length(f - box.Center()), 0, 1e-12);
+  // Every box corner projects inside the view cone.
+  const auto cam = art::Camera::FromVTK(vc, 100, 100);
+  const double half = 30 * M_PI / 180;
+  for (int i = 0; i < 8; ++i)
+  {
+    const Vec3 c((i & 1) ? 5 : -1, (i & 2) ? 4 : -2, (i & 4) ? 3 : -3);
+    const Vec3 d = Normalize(c - cam.Position());
+    EXPECT_LT(std::acos(Dot(d, cam.Forward())), half + 1e-9);
+  }
+}

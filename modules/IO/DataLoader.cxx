@@ -1,0 +1,377 @@
+#include "DataLoader.h"
+#include "AtomicFile.h"
+#include "Error.h"
+#include "MetaImageCheck.h"
+#include "PlyCheck.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkDICOMImageReader.h>
+#include <vtkDataSetReader.h>
+#include <vtkExecutive.h>
+#include <vtkImageData.h>
+#include <vtkMetaImageReader.h>
+#include <vtkNIFTIImageReader.h>
+#include <vtkNrrdReader.h>
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSTLReader.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLImageDataReader.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+namespace fs = std::filesystem;
+
+namespace art
+{
+namespace
+{
+const std::set<std::string> VolumeExt = { ".mha", ".mhd", ".nii", ".nii.gz", ".vti", ".nrrd", ".nhdr" };
+const std::set<std::string> SurfaceExt = { ".ply", ".obj", ".stl", ".vtp" };
+const std::set<std::string> MeshExt = { ".vtu", ".vtk" };
+
+// Keeps the first error a VTK object reports instead of letting it reach the output window.
+struct ErrorCatcher
+{
+  std::string Message;
+  vtkNew<vtkCallbackCommand> Cmd;
+
+  explicit ErrorCatcher(vtkAlgorithm* alg)
+  {
+    Cmd->SetClientData(this);
+    Cmd->SetCallback([](vtkObject*, unsigned long event, void* self, void* data) {
+      auto* me = static_cast<ErrorCatcher*>(self);
+      if (event == vtkCommand::ErrorEvent && me->Message.empty() && data)
+      {
+        me->Message = Clean(static_cast<const char*>(data));
+      }
+    });
+    alg->AddObserver(vtkCommand::ErrorEvent, Cmd);
+    alg->AddObserver(vtkCommand::WarningEvent, Cmd);
+    alg->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, Cmd);
+  }
+  // VTK messages carry "ERROR: In file, line N\nclass (0x..): text"; keep only the text.
+  static std::string Clean(std::string m)
+  {
+    auto p = m.rfind("): ");
+    if (p != std::string::npos)
+    {
+      m = m.substr(p + 3);
+    }
+    while (!m.empty() && (m.back() == '\n' || m.back() == ' ' || m.back() == '\r'))
+    {
+      m.pop_back();
+    }
+    for (char& c : m)
+    {
+      c = (c == '\n') ? ' ' : c;
+    }
+    return m;
+  }
+};
+
+void RequireFile(const std::string& path, bool allowDirectory)
+{
+  std::error_code ec;
+  if (path.empty())
+  {
+    throw Error("empty file name");
+  }
+  if (!fs::exists(path, ec))
+  {
+    throw Error("no such file or directory", path);
+  }
+  if (fs::is_directory(path, ec) && !allowDirectory)
+  {
+    throw Error("is a directory, expected a file", path);
+  }
+  if (!fs::is_directory(path, ec) && fs::file_size(path, ec) == 0)
+  {
+    throw Error("file is empty", path);
+  }
+}
+
+void RunReader(vtkAlgorithm* reader, const std::string& path)
+{
+  ErrorCatcher catcher(reader);
+  reader->Update();
+  if (!catcher.Message.empty())
+  {
+    throw Error("cannot read: " + catcher.Message, path);
+  }
+}
+
+void CheckPolyIndices(vtkPolyData* pd, const std::string& path)
+{
+  const vtkIdType n = pd->GetNumberOfPoints();
+  for (vtkCellArray* cells : { pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType npts;
+      const vtkIdType* ids;
+      it->GetCurrentCell(npts, ids);
+      for (vtkIdType i = 0; i < npts; ++i)
+      {
+        if (ids[i] < 0 || ids[i] >= n)
+        {
+          throw Error("a face refers to vertex " + std::to_string(ids[i]) + " of " +
+              std::to_string(n),
+            path);
+        }
+      }
+    }
+  }
+}
+// A DICOM Part 10 file has "DICM" at byte 128; vtkDICOMImageReader gives no useful message
+// for a folder without one.
+bool HasDicomFile(const std::string& dir)
+{
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+  {
+    if (!entry.is_regular_file(ec))
+    {
+      continue;
+    }
+    std::ifstream in(entry.path(), std::ios::binary);
+    char magic[4] = {};
+    if (in.seekg(128) && in.read(magic, 4) && std::string(magic, 4) == "DICM")
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
+const char* KindName(DataKind k)
+{
+  switch (k)
+  {
+    case DataKind::Volume:
+      return "volume";
+    case DataKind::Surface:
+      return "surface";
+    default:
+      return "mesh";
+  }
+}
+
+DataKind KindOf(const std::string& path)
+{
+  RequireFile(path, true);
+  std::error_code ec;
+  const std::string e = LowerExtension(path);
+  if (fs::is_directory(path, ec))
+  {
+    if (!e.empty())
+    {
+      throw Error("is a directory, expected a file", path);
+    }
+    return DataKind::Volume; // a DICOM series
+  }
+  if (VolumeExt.count(e))
+  {
+    return DataKind::Volume;
+  }
+  if (SurfaceExt.count(e))
+  {
+    return DataKind::Surface;
+  }
+  if (MeshExt.count(e))
+  {
+    return DataKind::Mesh;
+  }
+  throw Error("unknown file type '" + (e.empty() ? std::string("(none)") : e) +
+      "' (volumes: .mha .mhd .nii .nii.gz .vti .nrrd or a DICOM folder; surfaces: .ply .obj "
+      ".stl .vtp; meshes: .vtu .vtk)",
+    path);
+}
+
+vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path)
+{
+  if (KindOf(path) != DataKind::Volume)
+  {
+    throw Error("is not a volume (expected .mha .mhd .nii .nii.gz .vti .nrrd or a DICOM folder)", path);
+  }
+  std::error_code ec;
+  const std::string e = LowerExtension(path);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (fs::is_directory(path, ec))
+  {
+    if (!HasDicomFile(path))
+    {
+      throw Error("folder holds no readable DICOM series", path);
+    }
+    auto r = vtkSmartPointer<vtkDICOMImageReader>::New();
+    r->SetDirectoryName(path.c_str());
+    reader = r;
+  }
+  else if (e == ".mha" || e == ".mhd")
+  {
+    CheckMetaImage(path);
+    auto r = vtkSmartPointer<vtkMetaImageReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (e == ".nii" || e == ".nii.gz")
+  {
+    auto r = vtkSmartPointer<vtkNIFTIImageReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (e == ".vti")
+  {
+    auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else
+  {
+    auto r = vtkSmartPointer<vtkNrrdReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  RunReader(reader, path);
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->ShallowCopy(reader->GetOutputDataObject(0));
+  int dims[3];
+  img->GetDimensions(dims);
+  if (dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0 || !img->GetPointData()->GetScalars())
+  {
+    throw Error(fs::is_directory(path, ec) ? "folder holds no readable DICOM series"
+                                           : "holds no voxels (empty or unreadable volume)",
+      path);
+  }
+  return img;
+}
+
+vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
+{
+  if (KindOf(path) != DataKind::Surface)
+  {
+    throw Error("is not a surface (expected .ply .obj .stl .vtp)", path);
+  }
+  const std::string e = LowerExtension(path);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (e == ".ply")
+  {
+    CheckPly(path);
+    auto r = vtkSmartPointer<vtkPLYReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (e == ".obj")
+  {
+    auto r = vtkSmartPointer<vtkOBJReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (e == ".stl")
+  {
+    auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else
+  {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  RunReader(reader, path);
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->ShallowCopy(reader->GetOutputDataObject(0));
+  if (pd->GetNumberOfPoints() == 0 || pd->GetNumberOfPolys() + pd->GetNumberOfStrips() == 0)
+  {
+    throw Error("holds no polygons (empty or unreadable surface)", path);
+  }
+  CheckPolyIndices(pd, path);
+  return pd;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)
+{
+  if (KindOf(path) != DataKind::Mesh)
+  {
+    throw Error("is not a mesh (expected .vtu or .vtk)", path);
+  }
+  vtkSmartPointer<vtkDataObject> out;
+  if (LowerExtension(path) == ".vtu")
+  {
+    auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    r->SetFileName(path.c_str());
+    RunReader(r, path);
+    out = r->GetOutputDataObject(0);
+  }
+  else
+  {
+    auto r = vtkSmartPointer<vtkDataSetReader>::New();
+    r->SetFileName(path.c_str());
+    RunReader(r, path);
+    out = r->GetOutputDataObject(0);
+  }
+  auto ug = vtkUnstructuredGrid::SafeDownCast(out);
+  if (!ug)
+  {
+    throw Error("does not hold an unstructured grid", path);
+  }
+  if (ug->GetNumberOfCells() == 0)
+  {
+    throw Error("holds no cells (empty or unreadable mesh)", path);
+  }
+  auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  copy->ShallowCopy(ug);
+  return copy;
+}
+
+vtkSmartPointer<vtkDataObject> Load(const std::string& path, DataKind* kind)
+{
+  const DataKind k = KindOf(path);
+  if (kind)
+  {
+    *kind = k;
+  }
+  switch (k)
+  {
+    case DataKind::Volume:
+      return LoadVolume(path);
+    case DataKind::Surface:
+      return LoadSurface(path);
+    default:
+      return LoadMesh(path);
+  }
+}
+
+void SaveMesh(vtkUnstructuredGrid* mesh, const std::string& path)
+{
+  if (LowerExtension(path) != ".vtu")
+  {
+    throw Error("meshes are written as .vtu", path);
+  }
+  AtomicFile file(path);
+  vtkNew<vtkXMLUnstructuredGridWriter> w;
+  w->SetInputData(mesh);
+  w->SetFileName(file.TempPath().c_str());
+  w->SetDataModeToBinary();
+  w->SetCompressorTypeToZLib();
+  ErrorCatcher catcher(w);
+  if (!w->Write() || !catcher.Message.empty())
+  {
+    throw Error("cannot write mesh: " + catcher.Message, path);
+  }
+  file.Commit();
+}
+} // namespace art

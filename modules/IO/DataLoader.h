@@ -1,0 +1,41 @@
+// DataLoader: reads any volume, surface or tetrahedral mesh VTK can read, chosen by extension,
+// and turns every failure (missing file, unknown type, truncated or garbage content, a VTK
+// reader error) into one art::Error that names the file and the problem.
+#ifndef art_DataLoader_h
+#define art_DataLoader_h
+
+#include "AdaptiveRTIOModule.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkDataObject;
+class vtkImageData;
+class vtkPolyData;
+class vtkUnstructuredGrid;
+
+namespace art
+{
+enum class DataKind
+{
+  Volume,  ///< vtkImageData: .mha .mhd .nii .nii.gz .vti .nrrd .nhdr, or a DICOM folder
+  Surface, ///< vtkPolyData: .ply .obj .stl .vtp
+  Mesh     ///< vtkUnstructuredGrid: .vtu .vtk
+};
+
+/// The kind a path will load as; throws art::Error for a missing file or an unknown extension.
+ADAPTIVERTIO_EXPORT DataKind KindOf(const std::string& path);
+ADAPTIVERTIO_EXPORT const char* KindName(DataKind k);
+
+ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path);
+ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path);
+ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path);
+/// Loads whatever the extension says; the result is one of the three types above.
+ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkDataObject> Load(const std::string& path, DataKind* kind = nullptr);
+
+/// Writes a mesh as .vtu (binary, zlib) atomically.
+ADAPTIVERTIO_EXPORT void SaveMesh(vtkUnstructuredGrid* mesh, const std::string& path);
+} // namespace art
+
+#endif

@@ -1,0 +1,160 @@
+#include "ImageMetrics.h"
+#include "Error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace art
+{
+namespace
+{
+void CheckSameSize(const Image& a, const Image& b)
+{
+  if (a.Width() != b.Width() || a.Height() != b.Height())
+  {
+    throw Error("images differ in size: " + std::to_string(a.Width()) + "x" +
+      std::to_string(a.Height()) + " vs " + std::to_string(b.Width()) + "x" +
+      std::to_string(b.Height()));
+  }
+}
+
+// Separable Gaussian filter with the image edge clamped.
+std::vector<double> Blur(const std::vector<double>& in, int w, int h, const std::vector<double>& k)
+{
+  const int r = static_cast<int>(k.size() / 2);
+  std::vector<double> tmp(in.size()), out(in.size());
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      double s = 0;
+      for (int i = -r; i <= r; ++i)
+      {
+        s += k[i + r] * in[static_cast<size_t>(y) * w + std::clamp(x + i, 0, w - 1)];
+      }
+      tmp[static_cast<size_t>(y) * w + x] = s;
+    }
+  }
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      double s = 0;
+      for (int i = -r; i <= r; ++i)
+      {
+        s += k[i + r] * tmp[static_cast<size_t>(std::clamp(y + i, 0, h - 1)) * w + x];
+      }
+      out[static_cast<size_t>(y) * w + x] = s;
+    }
+  }
+  return out;
+}
+
+double ChannelSSIM(const Image& a, const Image& b, int c, const std::vector<double>& k)
+{
+  const int w = a.Width(), h = a.Height();
+  const size_t n = static_cast<size_t>(w) * h;
+  std::vector<double> x(n), y(n), xx(n), yy(n), xy(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    x[i] = a.Pixels()[4 * i + c];
+    y[i] = b.Pixels()[4 * i + c];
+    xx[i] = x[i] * x[i];
+    yy[i] = y[i] * y[i];
+    xy[i] = x[i] * y[i];
+  }
+  const auto mx = Blur(x, w, h, k), my = Blur(y, w, h, k);
+  const auto sxx = Blur(xx, w, h, k), syy = Blur(yy, w, h, k), sxy = Blur(xy, w, h, k);
+  const double C1 = 0.01 * 0.01, C2 = 0.03 * 0.03;
+  double sum = 0;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const double vx = sxx[i] - mx[i] * mx[i], vy = syy[i] - my[i] * my[i];
+    const double cxy = sxy[i] - mx[i] * my[i];
+    sum += ((2 * mx[i] * my[i] + C1) * (2 * cxy + C2)) /
+      ((mx[i] * mx[i] + my[i] * my[i] + C1) * (vx + vy + C2));
+  }
+  return sum / double(n);
+}
+} // namespace
+
+double RMSE(const Image& a, const Image& b)
+{
+  CheckSameSize(a, b);
+  const auto& pa = a.Pixels();
+  const auto& pb = b.Pixels();
+  if (pa.empty())
+  {
+    return 0.0;
+  }
+  double s = 0;
+  for (size_t i = 0; i < pa.size(); ++i)
+  {
+    const double d = double(pa[i]) - double(pb[i]);
+    s += d * d;
+  }
+  return std::sqrt(s / double(pa.size()));
+}
+
+double PSNR(const Image& a, const Image& b)
+{
+  const double e = RMSE(a, b);
+  return e > 0 ? -20.0 * std::log10(e) : std::numeric_limits<double>::infinity();
+}
+
+double SSIM(const Image& a, const Image& b)
+{
+  CheckSameSize(a, b);
+  if (a.Empty())
+  {
+    return 1.0;
+  }
+  std::vector<double> k(11);
+  double ks = 0;
+  for (int i = 0; i < 11; ++i)
+  {
+    k[i] = std::exp(-double((i - 5) * (i - 5)) / (2 * 1.5 * 1.5));
+    ks += k[i];
+  }
+  for (double& v : k)
+  {
+    v /= ks;
+  }
+  double s = 0;
+  for (int c = 0; c < 4; ++c)
+  {
+    s += ChannelSSIM(a, b, c, k);
+  }
+  return s / 4.0;
+}
+
+ImageMetricsResult CompareImages(const Image& a, const Image& b)
+{
+  ImageMetricsResult r;
+  r.rmse = RMSE(a, b);
+  r.psnr = r.rmse > 0 ? -20.0 * std::log10(r.rmse) : std::numeric_limits<double>::infinity();
+  r.ssim = SSIM(a, b);
+  for (size_t i = 0; i < a.Pixels().size(); ++i)
+  {
+    r.maxAbs = std::max(r.maxAbs, std::fabs(double(a.Pixels()[i]) - double(b.Pixels()[i])));
+  }
+  return r;
+}
+
+Image DifferenceImage(const Image& a, const Image& b, float gain)
+{
+  CheckSameSize(a, b);
+  Image d(a.Width(), a.Height(), { 0.f, 0.f, 0.f, 1.f });
+  for (size_t i = 0; i < a.Pixels().size(); i += 4)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      d.Pixels()[i + c] = std::min(1.f, gain * std::fabs(a.Pixels()[i + c] - b.Pixels()[i + c]));
+    }
+  }
+  return d;
+}
+} // namespace art

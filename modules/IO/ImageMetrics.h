@@ -1,0 +1,29 @@
+// ImageMetrics: RMSE and PSNR over RGBA (values in [0, 1], peak 1), and SSIM (Wang, Bovik,
+// Sheikh & Simoncelli 2004: 11x11 Gaussian window, sigma 1.5, K1 0.01, K2 0.03) averaged over
+// the four channels. Used for every accuracy figure the project reports.
+#ifndef art_ImageMetrics_h
+#define art_ImageMetrics_h
+
+#include "AdaptiveRTIOModule.h"
+#include "Image.h"
+
+namespace art
+{
+struct ImageMetricsResult
+{
+  double rmse = 0.0;
+  double psnr = 0.0; ///< dB; +infinity for identical images
+  double ssim = 1.0;
+  double maxAbs = 0.0; ///< largest absolute channel difference
+};
+
+/// Throws art::Error when the sizes differ.
+ADAPTIVERTIO_EXPORT double RMSE(const Image& a, const Image& b);
+ADAPTIVERTIO_EXPORT double PSNR(const Image& a, const Image& b);
+ADAPTIVERTIO_EXPORT double SSIM(const Image& a, const Image& b);
+ADAPTIVERTIO_EXPORT ImageMetricsResult CompareImages(const Image& a, const Image& b);
+/// |a - b| per channel, scaled by `gain` and clamped to 1; alpha set to 1 so it can be viewed.
+ADAPTIVERTIO_EXPORT Image DifferenceImage(const Image& a, const Image& b, float gain = 1.f);
+} // namespace art
+
+#endif

@@ -1,0 +1,122 @@
+#include "MetaImageCheck.h"
+#include "Error.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace art
+{
+namespace
+{
+int ElementSize(const std::string& type)
+{
+  static const std::map<std::string, int> sizes = { { "MET_CHAR", 1 }, { "MET_UCHAR", 1 },
+    { "MET_SHORT", 2 }, { "MET_USHORT", 2 }, { "MET_INT", 4 }, { "MET_UINT", 4 },
+    { "MET_LONG", 4 }, { "MET_ULONG", 4 }, { "MET_LONG_LONG", 8 }, { "MET_ULONG_LONG", 8 },
+    { "MET_FLOAT", 4 }, { "MET_DOUBLE", 8 } };
+  const auto it = sizes.find(type);
+  return it == sizes.end() ? 0 : it->second;
+}
+
+std::string Trim(const std::string& s)
+{
+  const auto b = s.find_first_not_of(" \t\r");
+  const auto e = s.find_last_not_of(" \t\r");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+} // namespace
+
+void CheckMetaImage(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw Error("cannot open file", path);
+  }
+  std::map<std::string, std::string> keys;
+  std::string line;
+  std::streamoff dataStart = -1;
+  // The header is text lines "Key = Value" ending with ElementDataFile.
+  for (int n = 0; n < 200 && std::getline(in, line); ++n)
+  {
+    const auto eq = line.find('=');
+    if (eq == std::string::npos)
+    {
+      throw Error("not a MetaImage header (line " + std::to_string(n + 1) + ")", path);
+    }
+    const std::string key = Trim(line.substr(0, eq));
+    keys[key] = Trim(line.substr(eq + 1));
+    if (key == "ElementDataFile")
+    {
+      dataStart = in.tellg();
+      break;
+    }
+  }
+  if (dataStart < 0 || !keys.count("DimSize") || !keys.count("ElementType"))
+  {
+    throw Error("not a MetaImage header (no DimSize, ElementType or ElementDataFile)", path);
+  }
+  std::istringstream dims(keys["DimSize"]);
+  unsigned long long count = 1;
+  long long d;
+  int ndims = 0;
+  while (dims >> d)
+  {
+    if (d <= 0)
+    {
+      throw Error("DimSize has a non-positive size", path);
+    }
+    count *= static_cast<unsigned long long>(d);
+    ++ndims;
+  }
+  if (ndims == 0)
+  {
+    throw Error("DimSize is empty", path);
+  }
+  const int esize = ElementSize(keys["ElementType"]);
+  if (esize == 0)
+  {
+    throw Error("unknown ElementType '" + keys["ElementType"] + "'", path);
+  }
+  const int channels = keys.count("ElementNumberOfChannels") ? std::stoi(keys["ElementNumberOfChannels"]) : 1;
+  const bool compressed = keys.count("CompressedData") &&
+    (keys["CompressedData"] == "True" || keys["CompressedData"] == "true");
+
+  std::string dataFile = path;
+  std::streamoff offset = dataStart;
+  const std::string& edf = keys["ElementDataFile"];
+  if (edf != "LOCAL" && edf != "Local" && edf != "local")
+  {
+    if (edf.find('%') != std::string::npos || edf == "LIST")
+    {
+      return; // a file series; VTK checks each file as it reads
+    }
+    dataFile = (fs::path(path).parent_path() / edf).string();
+    offset = keys.count("HeaderSize") ? std::stoll(keys["HeaderSize"]) : 0;
+    std::error_code ec;
+    if (!fs::exists(dataFile, ec))
+    {
+      throw Error("data file '" + edf + "' named in the header does not exist", path);
+    }
+  }
+  std::error_code ec;
+  const auto size = static_cast<long long>(fs::file_size(dataFile, ec));
+  const long long have = size - offset;
+  long long need = static_cast<long long>(count) * esize * channels;
+  if (compressed)
+  {
+    need = keys.count("CompressedDataSize") ? std::stoll(keys["CompressedDataSize"]) : 1;
+  }
+  if (have < need)
+  {
+    throw Error("truncated: header promises " + std::to_string(need) + " data bytes, file holds " +
+        std::to_string(std::max(0LL, have)),
+      path);
+  }
+}
+} // namespace art

@@ -1,0 +1,117 @@
+#include "Error.h"
+#include "ImageIO.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+namespace fs = std::filesystem;
+using art::Image;
+
+namespace
+{
+std::string TempDir()
+{
+  const fs::path d = fs::path(ART_TEST_OUTPUT) / "TestImageIO";
+  fs::create_directories(d);
+  return d.string();
+}
+
+Image RandomFloats(int w, int h)
+{
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<float> u(-0.5f, 2.0f); // EXR keeps values outside [0, 1]
+  Image img(w, h);
+  for (float& v : img.Pixels())
+  {
+    v = u(rng);
+  }
+  img.Pixel(0, 0)[0] = 1e-30f; // a denormal-adjacent value survives too
+  return img;
+}
+
+size_t CountTemps(const std::string& dir)
+{
+  size_t n = 0;
+  for (const auto& e : fs::directory_iterator(dir))
+  {
+    n += e.path().filename().string().find(".tmp") != std::string::npos;
+  }
+  return n;
+}
+}
+
+TEST(ImageIO, ExrRoundTripIsBitExact)
+{
+  const Image a = RandomFloats(37, 23);
+  const std::string p = TempDir() + "/roundtrip.exr";
+  art::WriteImage(a, p);
+  const Image b = art::ReadImage(p);
+  ASSERT_EQ(b.Width(), 37);
+  ASSERT_EQ(b.Height(), 23);
+  EXPECT_EQ(std::memcmp(a.Pixels().data(), b.Pixels().data(), a.Pixels().size() * sizeof(float)), 0);
+}
+
+TEST(ImageIO, TiffRoundTripIsBitExact)
+{
+  const Image a = RandomFloats(16, 9);
+  const std::string p = TempDir() + "/roundtrip.tif";
+  art::WriteImage(a, p);
+  const Image b = art::ReadImage(p);
+  EXPECT_EQ(std::memcmp(a.Pixels().data(), b.Pixels().data(), a.Pixels().size() * sizeof(float)), 0);
+}
+
+TEST(ImageIO, PngQuantisesTo8BitsAndKeepsRowOrder)
+{
+  Image a(256, 2);
+  for (int x = 0; x < 256; ++x)
+  {
+    a.Set(x, 0, { x / 255.f, 1.f - x / 255.f, 0.f, 1.f });
+    a.Set(x, 1, { 0.f, 0.f, 1.f, x / 255.f });
+  }
+  const std::string p = TempDir() + "/levels.png";
+  art::WriteImage(a, p);
+  const Image b = art::ReadImage(p);
+  for (int x = 0; x < 256; ++x)
+  {
+    EXPECT_NEAR(b.Pixel(x, 0)[0], x / 255.f, 1e-6);
+    EXPECT_NEAR(b.Pixel(x, 0)[1], 1.f - x / 255.f, 1e-6);
+    EXPECT_NEAR(b.Pixel(x, 1)[2], 1.f, 1e-6);
+    EXPECT_NEAR(b.Pixel(x, 1)[3], x / 255.f, 1e-6);
+  }
+}
+
+TEST(ImageIO, FailedWriteLeavesExistingFileAndNoTemp)
+{
+  const std::string dir = TempDir();
+  const std::string p = dir + "/keep.png";
+  art::WriteImage(Image(4, 4, { 1, 0, 0, 1 }), p);
+  const auto before = fs::file_size(p);
+  // An empty image is refused before anything is written.
+  EXPECT_THROW(art::WriteImage(Image(), p), art::Error);
+  EXPECT_EQ(fs::file_size(p), before);
+  EXPECT_EQ(CountTemps(dir), 0u);
+}
+
+TEST(ImageIO, ErrorsNameTheFile)
+{
+  try
+  {
+    art::WriteImage(Image(2, 2), "/nonexistent-folder/x.png");
+    FAIL() << "no error";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent-folder/x.png"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("does not exist"), std::string::npos);
+  }
+  EXPECT_THROW(art::WriteImage(Image(2, 2), TempDir() + "/x.bmpx"), art::Error);
+  EXPECT_THROW(art::ReadImage(TempDir() + "/missing.png"), art::Error);
+  const std::string junk = TempDir() + "/junk.png";
+  std::ofstream(junk) << "definitely not a png";
+  EXPECT_THROW(art::ReadImage(junk), art::Error);
+}

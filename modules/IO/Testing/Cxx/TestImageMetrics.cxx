@@ -1,0 +1,86 @@
+#include "Error.h"
+#include "ImageMetrics.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using art::Image;
+
+namespace
+{
+Image Noise(int w, int h, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(0.f, 1.f);
+  Image img(w, h);
+  for (float& v : img.Pixels())
+  {
+    v = u(rng);
+  }
+  return img;
+}
+}
+
+TEST(ImageMetrics, IdenticalImages)
+{
+  const Image a = Noise(40, 30, 1);
+  const auto r = art::CompareImages(a, a);
+  EXPECT_EQ(r.rmse, 0.0);
+  EXPECT_TRUE(std::isinf(r.psnr));
+  EXPECT_NEAR(r.ssim, 1.0, 1e-12);
+}
+
+TEST(ImageMetrics, ConstantOffsetGivesKnownRmseAndPsnr)
+{
+  Image a(32, 32, { 0.2f, 0.4f, 0.6f, 0.5f });
+  Image b(32, 32, { 0.3f, 0.5f, 0.7f, 0.6f });
+  // Every channel differs by 0.1: RMSE 0.1, PSNR 20 dB (float rounding only).
+  EXPECT_NEAR(art::RMSE(a, b), 0.1, 1e-7);
+  EXPECT_NEAR(art::PSNR(a, b), 20.0, 1e-5);
+}
+
+TEST(ImageMetrics, SsimOfConstantImagesIsTheLuminanceTerm)
+{
+  // For constant images the variances vanish: SSIM = (2ab + C1) / (a^2 + b^2 + C1).
+  const float va = 0.2f, vb = 0.5f;
+  Image a(24, 24, { va, va, va, va });
+  Image b(24, 24, { vb, vb, vb, vb });
+  const double C1 = 1e-4, x = va, y = vb;
+  EXPECT_NEAR(art::SSIM(a, b), (2 * x * y + C1) / (x * x + y * y + C1), 1e-6);
+}
+
+TEST(ImageMetrics, SsimFallsWithNoise)
+{
+  const Image a = Noise(64, 64, 7);
+  Image b = a, c = a;
+  std::mt19937 rng(3);
+  std::normal_distribution<float> n(0.f, 1.f);
+  for (size_t i = 0; i < b.Pixels().size(); ++i)
+  {
+    const float e = n(rng);
+    b.Pixels()[i] += 0.02f * e;
+    c.Pixels()[i] += 0.2f * e;
+  }
+  const double sb = art::SSIM(a, b), sc = art::SSIM(a, c);
+  EXPECT_LT(sb, 1.0);
+  EXPECT_GT(sb, 0.9);
+  EXPECT_LT(sc, sb);
+}
+
+TEST(ImageMetrics, DifferentSizesAreAnError)
+{
+  EXPECT_THROW(art::RMSE(Image(4, 4), Image(4, 5)), art::Error);
+}
+
+TEST(ImageMetrics, DifferenceImage)
+{
+  Image a(2, 1, { 0.5f, 0.5f, 0.5f, 1.f });
+  Image b(2, 1, { 0.25f, 0.5f, 0.75f, 1.f });
+  const Image d = art::DifferenceImage(a, b, 2.f);
+  EXPECT_FLOAT_EQ(d.Pixel(1, 0)[0], 0.5f);
+  EXPECT_FLOAT_EQ(d.Pixel(1, 0)[1], 0.0f);
+  EXPECT_FLOAT_EQ(d.Pixel(1, 0)[2], 0.5f);
+  EXPECT_FLOAT_EQ(d.Pixel(1, 0)[3], 1.0f);
+}

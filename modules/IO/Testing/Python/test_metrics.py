@@ -1,0 +1,33 @@
+"""adaptivert imports from Debian's python3 and its vtkImageMetrics gives known answers."""
+import math
+import os
+import sys
+
+import adaptivert
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkCommonCore import vtkFloatArray
+
+
+def constant_image(value, w=16, h=8):
+    img = vtkImageData()
+    img.SetDimensions(w, h, 1)
+    a = vtkFloatArray()
+    a.SetNumberOfComponents(4)
+    a.SetNumberOfTuples(w * h)
+    for i in range(w * h):
+        a.SetTuple4(i, value, value, value, 1.0)
+    img.GetPointData().SetScalars(a)
+    return img
+
+
+m = adaptivert.vtkImageMetrics()
+assert m.Compare(constant_image(0.25), constant_image(0.35)), m.GetErrorMessage()
+# Three of four channels differ by 0.1: RMSE = sqrt(3/4) * 0.1.
+expected = math.sqrt(0.75) * 0.1
+assert abs(m.GetRMSE() - expected) < 1e-6, m.GetRMSE()
+assert abs(m.GetPSNR() - (-20 * math.log10(expected))) < 1e-4, m.GetPSNR()
+assert not m.Compare(constant_image(0.1, 4, 4), constant_image(0.1, 5, 4))
+assert "differ in size" in m.GetErrorMessage(), m.GetErrorMessage()
+assert not m.CompareFiles("/nonexistent/a.png", "/nonexistent/b.png")
+assert "/nonexistent/a.png" in m.GetErrorMessage()
+print("ok", adaptivert.__version__, file=sys.stderr)

@@ -1,0 +1,21 @@
+// VTKImageConvert: art::Image <-> vtkImageData. VTK images have row 0 at the bottom and art
+// images at the top, so rows are flipped; unsigned char data is scaled to [0, 1].
+#ifndef art_VTKImageConvert_h
+#define art_VTKImageConvert_h
+
+#include "AdaptiveRTIOModule.h"
+#include "Image.h"
+
+#include <vtkSmartPointer.h>
+
+class vtkImageData;
+
+namespace art
+{
+/// 1 to 4 components of any scalar type; throws art::Error for other shapes.
+ADAPTIVERTIO_EXPORT Image FromVTKImage(vtkImageData* img);
+/// Float RGBA vtkImageData of the same size.
+ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> ToVTKImage(const Image& img);
+} // namespace art
+
+#endif

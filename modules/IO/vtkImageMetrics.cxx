@@ -1,0 +1,67 @@
+#include "vtkImageMetrics.h"
+
+#include "Error.h"
+#include "ImageIO.h"
+#include "ImageMetrics.h"
+#include "VTKImageConvert.h"
+
+#include <vtkObjectFactory.h>
+
+#include <cmath>
+
+vtkStandardNewMacro(vtkImageMetrics);
+
+namespace
+{
+void Store(const art::ImageMetricsResult& r, double& rmse, double& psnr, double& ssim, double& maxAbs)
+{
+  rmse = r.rmse;
+  psnr = std::isfinite(r.psnr) ? r.psnr : VTK_DOUBLE_MAX;
+  ssim = r.ssim;
+  maxAbs = r.maxAbs;
+}
+}
+
+bool vtkImageMetrics::Compare(vtkImageData* a, vtkImageData* b)
+{
+  try
+  {
+    Store(art::CompareImages(art::FromVTKImage(a), art::FromVTKImage(b)), this->RMSE, this->PSNR,
+      this->SSIM, this->MaxAbsDifference);
+    this->ErrorMessage.clear();
+    return true;
+  }
+  catch (const art::Error& e)
+  {
+    this->ErrorMessage = e.what();
+    return false;
+  }
+}
+
+bool vtkImageMetrics::CompareFiles(const char* fileA, const char* fileB)
+{
+  try
+  {
+    // Read in order, so an error names the first bad file.
+    const art::Image a = art::ReadImage(fileA ? fileA : "");
+    const art::Image b = art::ReadImage(fileB ? fileB : "");
+    Store(art::CompareImages(a, b), this->RMSE, this->PSNR, this->SSIM, this->MaxAbsDifference);
+    this->ErrorMessage.clear();
+    return true;
+  }
+  catch (const art::Error& e)
+  {
+    this->ErrorMessage = e.what();
+    return false;
+  }
+}
+
+void vtkImageMetrics::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "RMSE: " << this->RMSE << "\n";
+  os << indent << "PSNR: " << this->PSNR << " dB\n";
+  os << indent << "SSIM: " << this->SSIM << "\n";
+  os << indent << "MaxAbsDifference: " << this->MaxAbsDifference << "\n";
+  os << indent << "ErrorMessage: " << this->ErrorMessage << "\n";
+}

@@ -1,0 +1,54 @@
+/**
+ * @class vtkImageMetrics
+ * @brief Image error metrics (RMSE, PSNR, SSIM) between two 2-D images or image files.
+ *
+ * Images may have 1 to 4 components of any scalar type; unsigned char values are scaled by
+ * 1/255, others are taken as values in [0, 1]. Files are read through OpenImageIO (PNG, EXR,
+ * TIFF). After a successful Compare the figures are available through the getters; on failure
+ * Compare returns false and GetErrorMessage() says why.
+ */
+#ifndef vtkImageMetrics_h
+#define vtkImageMetrics_h
+
+#include "AdaptiveRTIOModule.h"
+#include "vtkObject.h"
+
+#include <string>
+
+class vtkImageData;
+
+class ADAPTIVERTIO_EXPORT vtkImageMetrics : public vtkObject
+{
+public:
+  static vtkImageMetrics* New();
+  vtkTypeMacro(vtkImageMetrics, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /** Compares two images of equal size. */
+  bool Compare(vtkImageData* a, vtkImageData* b);
+  /** Compares two image files. */
+  bool CompareFiles(const char* fileA, const char* fileB);
+
+  vtkGetMacro(RMSE, double);
+  /** PSNR in dB with peak 1; VTK_DOUBLE_MAX for identical images. */
+  vtkGetMacro(PSNR, double);
+  vtkGetMacro(SSIM, double);
+  vtkGetMacro(MaxAbsDifference, double);
+  const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
+
+protected:
+  vtkImageMetrics() = default;
+  ~vtkImageMetrics() override = default;
+
+  double RMSE = 0.0;
+  double PSNR = 0.0;
+  double SSIM = 1.0;
+  double MaxAbsDifference = 0.0;
+  std::string ErrorMessage;
+
+private:
+  vtkImageMetrics(const vtkImageMetrics&) = delete;
+  void operator=(const vtkImageMetrics&) = delete;
+};
+
+#endif
