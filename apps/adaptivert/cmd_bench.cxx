@@ -1,0 +1,54 @@
+// adaptivert bench <what>: runs a registered benchmark (Bench.h).
+#include "Bench.h"
+#include "Command.h"
+
+namespace cli
+{
+std::vector<BenchTarget>& BenchTargets()
+{
+  static std::vector<BenchTarget> t;
+  return t;
+}
+}
+
+namespace
+{
+void Declare(cli::Options& o)
+{
+  o.Add("results", 0, "DIR", "folder for the JSON, markdown table and PNG chart", "bench-results");
+  o.Add("runs", 0, "N", "timed runs per figure (the median is reported, min-max shown)", "5");
+  for (const auto& t : cli::BenchTargets())
+  {
+    if (t.declare)
+    {
+      t.declare(o);
+    }
+  }
+}
+
+int Run(const cli::Options& o)
+{
+  std::string names;
+  for (const auto& t : cli::BenchTargets())
+  {
+    names += (names.empty() ? "" : ", ") + t.name;
+  }
+  if (o.Positional().empty())
+  {
+    throw cli::UsageError("needs a benchmark name: " + (names.empty() ? std::string("none built") : names));
+  }
+  for (const auto& t : cli::BenchTargets())
+  {
+    if (t.name == o.Positional()[0])
+    {
+      return t.run(o);
+    }
+  }
+  throw cli::UsageError("unknown benchmark '" + o.Positional()[0] + "' (have: " + names + ")");
+}
+
+cli::Registrar reg({ "bench", "run a benchmark: tables, JSON and a PNG chart, against VTK and Embree",
+  "adaptivert bench [options] WHAT",
+  "  adaptivert bench triangles --results out/\n  adaptivert bench reduction --runs 3\n",
+  Declare, Run });
+} // namespace

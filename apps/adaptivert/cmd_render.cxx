@@ -1,0 +1,99 @@
+// adaptivert render INPUT -o OUT: renders a volume, tet mesh or triangle scene without a window.
+#include "Command.h"
+#include "Camera.h"
+#include "Error.h"
+#include "ImageIO.h"
+#include "Render.h"
+
+#include <vtkCamera.h>
+
+#include <cstdio>
+#include <sstream>
+
+namespace cli
+{
+std::vector<Renderer>& Renderers()
+{
+  static std::vector<Renderer> r;
+  return r;
+}
+
+View ViewFromOptions(const Options& o)
+{
+  View v;
+  o.GetSize("size", v.width, v.height);
+  v.output = o.Get("output");
+  if (v.output.empty())
+  {
+    throw UsageError("needs -o OUT.png (or .exr, .tif)");
+  }
+  if (!art::IsImageExtension(v.output))
+  {
+    throw UsageError("output must be .png, .exr or .tif: '" + v.output + "'");
+  }
+  std::istringstream bg(o.Get("background"));
+  char comma;
+  if (!(bg >> v.background[0] >> comma >> v.background[1] >> comma >> v.background[2]))
+  {
+    throw UsageError("--background expects R,G,B in [0, 1], got '" + o.Get("background") + "'");
+  }
+  return v;
+}
+
+void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam)
+{
+  cam->SetPosition(0, -1, 0);
+  cam->SetFocalPoint(0, 0, 0);
+  cam->SetViewUp(0, 0, 1);
+  cam->SetParallelProjection(o.Flag("parallel"));
+  art::Camera::Frame(cam, bounds, o.GetDouble("azimuth"), o.GetDouble("elevation"), o.GetDouble("zoom"));
+}
+} // namespace cli
+
+namespace
+{
+void Declare(cli::Options& o)
+{
+  o.Add("output", 'o', "FILE", "image to write: .png (8-bit), .exr or .tif (float)");
+  o.Add("size", 's', "WxH", "image size in pixels", "800x600");
+  o.Add("azimuth", 0, "DEG", "rotate the camera about the view-up axis", "0");
+  o.Add("elevation", 0, "DEG", "rotate the camera up over the focal point", "0");
+  o.Add("zoom", 0, "F", "zoom factor (>1 is closer)", "1");
+  o.Add("parallel", 0, "", "parallel instead of perspective projection");
+  o.Add("background", 0, "R,G,B", "background colour", "0,0,0");
+  for (const auto& r : cli::Renderers())
+  {
+    if (r.declare)
+    {
+      r.declare(o);
+    }
+  }
+}
+
+int Run(const cli::Options& o)
+{
+  if (o.Positional().size() != 1)
+  {
+    throw cli::UsageError("needs exactly one INPUT");
+  }
+  const std::string input = o.Positional()[0];
+  const art::DataKind kind = art::KindOf(input);
+  for (const auto& r : cli::Renderers())
+  {
+    for (art::DataKind k : r.kinds)
+    {
+      if (k == kind)
+      {
+        return r.run(o, input);
+      }
+    }
+  }
+  throw art::Error(std::string("rendering a ") + art::KindName(kind) + " is not available in this build", input);
+}
+
+cli::Registrar reg({ "render", "render a volume, tet mesh or triangle scene to an image, without a window",
+  "adaptivert render [options] INPUT -o OUT.png",
+  "  adaptivert render data/ct-head-128.mha -o head.png --size 500x500\n"
+  "  adaptivert render data/am_underworks.ply -o room.exr --azimuth 30\n",
+  Declare, Run });
+} // namespace
