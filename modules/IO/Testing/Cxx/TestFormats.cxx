@@ -1,0 +1,191 @@
+// Every volume and surface format the loader claims is read back with the right geometry and
+// values: files are written here with VTK's writers (or by hand for NRRD), then loaded.
+#include "DataLoader.h"
+#include "Error.h"
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkMetaImageWriter.h>
+#include <vtkNIFTIImageWriter.h>
+#include <vtkNew.h>
+#include <vtkOBJWriter.h>
+#include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSTLWriter.h>
+#include <vtkShortArray.h>
+#include <vtkSphereSource.h>
+#include <vtkXMLImageDataWriter.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string Dir()
+{
+  const fs::path d = fs::path(ART_TEST_OUTPUT) / "TestFormats";
+  fs::create_directories(d);
+  return d.string();
+}
+
+// An 11 x 5 x 3 int16 volume with distinct values, anisotropic spacing and an offset origin.
+vtkSmartPointer<vtkImageData> SmallVolume()
+{
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->SetDimensions(11, 5, 3);
+  img->SetSpacing(0.5, 0.75, 2.0);
+  img->SetOrigin(10, -4, 3);
+  vtkNew<vtkShortArray> s;
+  s->SetName("scalars");
+  s->SetNumberOfTuples(11 * 5 * 3);
+  for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
+  {
+    s->SetValue(i, static_cast<short>(i * 37 - 1000));
+  }
+  img->GetPointData()->SetScalars(s);
+  return img;
+}
+
+void ExpectSameVolume(vtkImageData* a, vtkImageData* b, bool checkOrigin = true)
+{
+  int da[3], db[3];
+  a->GetDimensions(da);
+  b->GetDimensions(db);
+  for (int i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(da[i], db[i]);
+    EXPECT_NEAR(a->GetSpacing()[i], b->GetSpacing()[i], 1e-6);
+    if (checkOrigin)
+    {
+      EXPECT_NEAR(a->GetOrigin()[i], b->GetOrigin()[i], 1e-6);
+    }
+  }
+  vtkDataArray* sa = a->GetPointData()->GetScalars();
+  vtkDataArray* sb = b->GetPointData()->GetScalars();
+  ASSERT_EQ(sa->GetNumberOfTuples(), sb->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < sa->GetNumberOfTuples(); ++i)
+  {
+    ASSERT_EQ(sa->GetTuple1(i), sb->GetTuple1(i)) << "voxel " << i;
+  }
+}
+
+template <class Writer>
+bool WriteSurface(vtkPolyData* pd, const std::string& path)
+{
+  vtkNew<Writer> w;
+  w->SetInputData(pd);
+  w->SetFileName(path.c_str());
+  return w->Write() == 1;
+}
+
+template <class Writer>
+void WriteVolume(vtkImageData* img, const std::string& path)
+{
+  vtkNew<Writer> w;
+  w->SetInputData(img);
+  w->SetFileName(path.c_str());
+  w->Write();
+}
+}
+
+TEST(Formats, MetaImageVtiNifti)
+{
+  auto img = SmallVolume();
+  WriteVolume<vtkMetaImageWriter>(img, Dir() + "/v.mha");
+  ExpectSameVolume(img, art::LoadVolume(Dir() + "/v.mha"));
+  WriteVolume<vtkXMLImageDataWriter>(img, Dir() + "/v.vti");
+  ExpectSameVolume(img, art::LoadVolume(Dir() + "/v.vti"));
+  // NIfTI keeps the origin in its qform, which VTK's reader does not put into the origin.
+  WriteVolume<vtkNIFTIImageWriter>(img, Dir() + "/v.nii");
+  ExpectSameVolume(img, art::LoadVolume(Dir() + "/v.nii"), false);
+  WriteVolume<vtkNIFTIImageWriter>(img, Dir() + "/v.nii.gz");
+  ExpectSameVolume(img, art::LoadVolume(Dir() + "/v.nii.gz"), false);
+}
+
+TEST(Formats, MetaImageHeaderWithSeparateRaw)
+{
+  auto img = SmallVolume();
+  vtkNew<vtkMetaImageWriter> w;
+  w->SetInputData(img);
+  w->SetFileName((Dir() + "/split.mhd").c_str());
+  w->SetRAWFileName((Dir() + "/split.raw").c_str());
+  w->SetCompression(false);
+  w->Write();
+  ExpectSameVolume(img, art::LoadVolume(Dir() + "/split.mhd"));
+  // The header names a raw file that is too short: a clear error, not a half-read volume.
+  fs::resize_file(Dir() + "/split.raw", 100);
+  EXPECT_THROW(art::LoadVolume(Dir() + "/split.mhd"), art::Error);
+}
+
+// vtkNrrdReader takes a fastest axis of 9 or fewer samples for vector components (its own
+// heuristic), so this volume is 11 wide.
+TEST(Formats, NrrdWrittenByHand)
+{
+  auto img = SmallVolume();
+  const std::string p = Dir() + "/v.nrrd";
+  {
+    std::ofstream f(p, std::ios::binary);
+    f << "NRRD0004\ntype: short\ndimension: 3\nsizes: 11 5 3\nkinds: domain domain domain\n"
+         "spacings: 0.5 0.75 2\n"
+         "encoding: raw\nendian: little\n\n";
+    auto* s = vtkShortArray::SafeDownCast(img->GetPointData()->GetScalars());
+    f.write(reinterpret_cast<const char*>(s->GetPointer(0)), s->GetNumberOfTuples() * 2);
+  }
+  ExpectSameVolume(img, art::LoadVolume(p), false);
+}
+
+TEST(Formats, DicomSeriesFolder)
+{
+  // tests/data/dicom: 4 slices of 16 x 12 cut from the default CT (tests/data/make_dicom.py).
+  auto img = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/tests/data/dicom");
+  int d[3];
+  img->GetDimensions(d);
+  EXPECT_EQ(d[0], 16);
+  EXPECT_EQ(d[1], 12);
+  EXPECT_EQ(d[2], 4);
+  EXPECT_NEAR(img->GetSpacing()[0], 1.914, 1e-4);
+  EXPECT_NEAR(img->GetSpacing()[2], 3.0, 1e-4);
+  double sum = 0;
+  vtkDataArray* s = img->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
+  {
+    sum += s->GetTuple1(i);
+  }
+  EXPECT_EQ(sum, 13104.0); // the crop's sum, printed by make_dicom.py
+}
+
+TEST(Formats, EverySurfaceFormatKeepsTheTriangles)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(24);
+  sphere->SetPhiResolution(13);
+  sphere->Update();
+  vtkPolyData* pd = sphere->GetOutput();
+  const vtkIdType tris = pd->GetNumberOfPolys();
+  ASSERT_EQ(tris, 24 * 2 * (13 - 2));
+
+  for (const std::string name : { "s.ply", "s.obj", "s.stl", "s.vtp" })
+  {
+    const std::string p = Dir() + "/" + name;
+    const std::string ext = name.substr(1);
+    ASSERT_TRUE(ext == ".ply" ? WriteSurface<vtkPLYWriter>(pd, p)
+        : ext == ".obj"       ? WriteSurface<vtkOBJWriter>(pd, p)
+        : ext == ".stl"       ? WriteSurface<vtkSTLWriter>(pd, p)
+                              : WriteSurface<vtkXMLPolyDataWriter>(pd, p));
+    auto back = art::LoadSurface(p);
+    EXPECT_EQ(back->GetNumberOfPolys(), tris) << name;
+    double a[6], b[6];
+    pd->GetBounds(a);
+    back->GetBounds(b);
+    for (int i = 0; i < 6; ++i)
+    {
+      EXPECT_NEAR(a[i], b[i], 1e-5) << name;
+    }
+  }
+}
