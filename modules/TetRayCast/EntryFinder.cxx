@@ -1,0 +1,184 @@
+#include "EntryFinder.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace art
+{
+namespace
+{
+constexpr int B = 8; // bucket size in pixels
+}
+
+EntryFinder::EntryFinder(const TetMesh& m)
+  : M(m)
+{
+  Global.resize(m.BoundaryFaces().size());
+  for (std::size_t i = 0; i < Global.size(); ++i)
+  {
+    Global[i] = static_cast<int>(i);
+  }
+}
+
+EntryFinder::EntryFinder(const TetMesh& m, const Camera& cam)
+  : M(m), W(cam.Width()), H(cam.Height()), Bucketed(true)
+{
+  BW = (W + B - 1) / B;
+  BH = (H + B - 1) / B;
+  // Recover the image-plane axes (scaled by the half extents) from the camera's own rays, so the
+  // projection below is exactly the inverse of Camera::Generate.
+  const Vec3 eye = cam.Position(), fwd = cam.Forward();
+  const bool par = cam.IsParallel();
+  Vec3 RW, UH;
+  {
+    const Ray rx = cam.Generate(W - 0.5, 0.5 * H - 0.5), ry = cam.Generate(0.5 * W - 0.5, -0.5);
+    RW = par ? rx.org - eye : rx.dir / Dot(rx.dir, fwd) - fwd;
+    UH = par ? ry.org - eye : ry.dir / Dot(ry.dir, fwd) - fwd;
+  }
+  const double rr = Dot(RW, RW), uu = Dot(UH, UH);
+  const auto& bf = M.BoundaryFaces();
+  std::vector<std::array<int, 4>> rect(bf.size(), { 1, 0, 1, 0 }); // bucket x0, x1, y0, y1 (inclusive)
+  std::vector<char> global(bf.size(), 0);
+  const double nearZ = 1e-9 * std::max(M.Bounds().Diagonal(), 1e-300);
+  for (std::size_t b = 0; b < bf.size(); ++b)
+  {
+    const auto& v = M.Tet(bf[b][0]);
+    const int* fv = TetMesh::FaceVertex[bf[b][1]];
+    const TetMesh::Plane pl = M.FacePlane(bf[b][0], bf[b][1]);
+    const Vec3& p0 = M.PointsArray()[v[fv[0]]];
+    if ((par ? Dot(fwd, pl.n) : Dot(p0 - eye, pl.n)) > 0)
+    {
+      continue; // back-facing: no ray from this camera enters through it
+    }
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    bool behind = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec3 q = M.PointsArray()[v[fv[k]]] - eye;
+      const double z = par ? 1.0 : Dot(q, fwd);
+      if (z <= nearZ)
+      {
+        behind = true;
+        break;
+      }
+      const double xn = Dot(q, RW) / (rr * z), yn = Dot(q, UH) / (uu * z);
+      const double px = (xn + 1) * 0.5 * W - 0.5, py = (1 - yn) * 0.5 * H - 0.5;
+      x0 = std::min(x0, px), x1 = std::max(x1, px), y0 = std::min(y0, py), y1 = std::max(y1, py);
+    }
+    if (behind)
+    {
+      global[b] = 1;
+      continue;
+    }
+    // One pixel of slack: rays go through pixel centres and the test itself is exact.
+    const int bx0 = static_cast<int>(std::floor((x0 - 1) / B)), bx1 = static_cast<int>(std::floor((x1 + 1) / B));
+    const int by0 = static_cast<int>(std::floor((y0 - 1) / B)), by1 = static_cast<int>(std::floor((y1 + 1) / B));
+    if (bx1 < 0 || by1 < 0 || bx0 >= BW || by0 >= BH)
+    {
+      continue;
+    }
+    rect[b] = { std::max(bx0, 0), std::min(bx1, BW - 1), std::max(by0, 0), std::min(by1, BH - 1) };
+  }
+  Start.assign(static_cast<std::size_t>(BW) * BH + 1, 0);
+  for (const auto& r : rect)
+  {
+    for (int y = r[2]; y <= r[3]; ++y)
+    {
+      for (int x = r[0]; x <= r[1]; ++x)
+      {
+        ++Start[y * BW + x + 1];
+      }
+    }
+  }
+  for (std::size_t k = 1; k < Start.size(); ++k)
+  {
+    Start[k] += Start[k - 1];
+  }
+  Faces.resize(Start.back());
+  std::vector<int> fill(Start.begin(), Start.end() - 1);
+  for (std::size_t b = 0; b < rect.size(); ++b)
+  {
+    const auto& r = rect[b];
+    for (int y = r[2]; y <= r[3]; ++y)
+    {
+      for (int x = r[0]; x <= r[1]; ++x)
+      {
+        Faces[fill[y * BW + x]++] = static_cast<int>(b);
+      }
+    }
+    if (global[b])
+    {
+      Global.push_back(static_cast<int>(b));
+    }
+  }
+}
+
+bool EntryFinder::Test(const TetWalker& w, const Ray& r, int b, Entry& e) const
+{
+  const auto& bf = M.BoundaryFaces()[b];
+  if (!w.Crosses(bf[0], bf[1], -1, e.x) || e.x.t < r.tmin)
+  {
+    return false;
+  }
+  e.face = b;
+  return true;
+}
+
+void EntryFinder::Find(const TetWalker& w, const Ray& r, int px, int py, bool all,
+  std::vector<Entry>& out, int& hint, Counters& c) const
+{
+  out.clear();
+  Entry e;
+  if (!all && hint >= 0)
+  {
+    // Coherence: the previous ray's entry face, then one step of the walk over its neighbours.
+    if (Test(w, r, hint, e))
+    {
+      out.push_back(e);
+      return;
+    }
+    for (int n : M.BoundaryAdjacency(hint))
+    {
+      if (n >= 0 && Test(w, r, n, e))
+      {
+        out.push_back(e);
+        hint = n;
+        return;
+      }
+    }
+  }
+  ++c.entrySearches;
+  auto scan = [&](const int* f, const int* end) {
+    for (; f != end; ++f)
+    {
+      if (Test(w, r, *f, e))
+      {
+        out.push_back(e);
+        if (!all)
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  };
+  bool done = false;
+  if (Bucketed && px >= 0 && py >= 0 && px < W && py < H)
+  {
+    const int k = (py / B) * BW + px / B;
+    done = scan(Faces.data() + Start[k], Faces.data() + Start[k + 1]);
+  }
+  if (!done)
+  {
+    scan(Global.data(), Global.data() + Global.size());
+  }
+  if (all)
+  {
+    std::sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) { return a.x.t < b.x.t; });
+  }
+  if (!out.empty())
+  {
+    hint = out.front().face;
+  }
+}
+} // namespace art

@@ -1,0 +1,52 @@
+// EntryFinder: the boundary faces a ray enters a tet mesh through (Grosso, Luerig & Ertl 1997,
+// sec. 5, ray entrance). Per frame, the boundary faces that face the camera are sorted into
+// 8x8-pixel screen buckets. A convex mesh has one entry face per ray: the previous ray's entry face
+// (scan lines run in alternating directions, so it is the neighbouring pixel's) and its boundary
+// neighbours are tried first, the bucket only when that walk fails. A non-convex mesh needs every
+// entry face along the ray, sorted by t: all of the bucket's faces are tested (or, when given, the
+// TriangleGrid all-hits query over the boundary triangles is used instead; see TetRayCaster).
+#ifndef art_EntryFinder_h
+#define art_EntryFinder_h
+
+#include "AdaptiveRTTetRayCastModule.h"
+#include "Camera.h"
+#include "Counters.h"
+#include "TetMesh.h"
+#include "TetWalker.h"
+
+#include <vector>
+
+namespace art
+{
+struct Entry
+{
+  int face; ///< boundary face index
+  FaceCrossing x;
+};
+
+class ADAPTIVERTTETRAYCAST_EXPORT EntryFinder
+{
+public:
+  /// Buckets for `cam`'s pixels.
+  EntryFinder(const TetMesh& m, const Camera& cam);
+  /// Without a camera: every boundary face is tested for every ray (tests, single rays).
+  explicit EntryFinder(const TetMesh& m);
+
+  /// The entry crossings of ray r (through pixel px, py when bucketed), sorted by t, with
+  /// t >= r.tmin. `all` asks for every one (non-convex); otherwise the first one found suffices
+  /// (convex). `hint` is the previous ray's entry face, updated (-1: none).
+  void Find(const TetWalker& w, const Ray& r, int px, int py, bool all, std::vector<Entry>& out,
+    int& hint, Counters& c) const;
+
+private:
+  bool Test(const TetWalker& w, const Ray& r, int b, Entry& e) const;
+
+  const TetMesh& M;
+  int W = 0, H = 0, BW = 0, BH = 0;
+  bool Bucketed = false;
+  std::vector<int> Start, Faces; ///< CSR: faces of bucket k are Faces[Start[k] .. Start[k+1])
+  std::vector<int> Global;       ///< faces every ray must test (behind the eye, or no camera)
+};
+} // namespace art
+
+#endif

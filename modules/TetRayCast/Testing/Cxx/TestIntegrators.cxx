@@ -1,0 +1,191 @@
+// The segment integrators against closed forms, additivity (exact for any split) and the
+// transfer function's conversions and error handling.
+#include "Error.h"
+#include "ExactIntegrator.h"
+#include "TransferFunction.h"
+
+#include <gtest/gtest.h>
+#include <vtkColorTransferFunction.h>
+#include <vtkNew.h>
+#include <vtkPiecewiseFunction.h>
+#include <vtkVolumeProperty.h>
+
+#include <cmath>
+#include <fstream>
+
+using namespace art;
+
+namespace
+{
+// Closed form for constant extinction and linear colour.
+// C = c0 (1 - J) + c1 (J - T), J = (1 - e^-D) / D, in long double, by series below D = 1.
+void ConstantTau(const double c0[3], const double c1[3], double tau, double l, double C[3], double& T)
+{
+  const long double D = (long double)tau * l;
+  long double oneMinusJ = 0, jMinusT = 0;
+  if (D < 1)
+  {
+    long double term = 1; // (-D)^n / (n+1)!
+    for (int n = 1; n < 60; ++n)
+    {
+      term *= -D / (n + 1);
+      oneMinusJ -= term;
+      jMinusT -= n * term;
+    }
+  }
+  else
+  {
+    const long double J = (1 - std::exp(-D)) / D;
+    oneMinusJ = 1 - J;
+    jMinusT = J - std::exp(-D);
+  }
+  T = double(std::exp(-D));
+  for (int k = 0; k < 3; ++k)
+    C[k] = double(c0[k] * oneMinusJ + c1[k] * jMinusT);
+}
+} // namespace
+
+TEST(Integrators, LinearPieceMatchesClosedFormThinToThick)
+{
+  const double c0[3] = { 0.1, 0.9, 0.5 }, c1[3] = { 0.8, 0.2, 0.5 };
+  for (double l : { 1e-9, 1e-6, 1e-3, 0.01, 0.3, 1.0, 7.0, 50.0, 1e3 })
+  {
+    double C[3], T, Ce[3], Te;
+    IntegrateLinearPiece(c0, c1, 0.7, 0.7, l, C, T);
+    ConstantTau(c0, c1, 0.7, l, Ce, Te);
+    EXPECT_NEAR(T, Te, 1e-15 + 1e-13 * Te) << l;
+    for (int k = 0; k < 3; ++k)
+    {
+      // Relative to the emitted amount: thin pieces must be as good as thick ones.
+      EXPECT_NEAR(C[k], Ce[k], 1e-12 * (1 - Te) + 1e-300) << "l " << l << " ch " << k;
+    }
+  }
+}
+
+TEST(Integrators, LinearPieceIsAdditive)
+{
+  // Exactness means any split composites to the same result, for rising and falling extinction.
+  const double c0[3] = { 0.2, 0.4, 1.0 }, c1[3] = { 0.9, 0.1, 0.3 };
+  for (double scale : { 1e-6, 1e-2, 1.0, 30.0 })
+  {
+    for (auto taus : { std::pair<double, double>{ 0.0, 2.0 }, { 3.0, 0.5 }, { 1.0, 1.0 } })
+    {
+      const double t0 = taus.first * scale, t1 = taus.second * scale, l = 2.0;
+      double C[3], T;
+      IntegrateLinearPiece(c0, c1, t0, t1, l, C, T);
+      double acc[3] = { 0, 0, 0 }, Tacc = 1;
+      const int n = 37;
+      for (int i = 0; i < n; ++i)
+      {
+        const double a = double(i) / n, b = double(i + 1) / n;
+        double ca[3], cb[3], P[3], Tp;
+        for (int k = 0; k < 3; ++k)
+        {
+          ca[k] = c0[k] + a * (c1[k] - c0[k]);
+          cb[k] = c0[k] + b * (c1[k] - c0[k]);
+        }
+        IntegrateLinearPiece(ca, cb, t0 + a * (t1 - t0), t0 + b * (t1 - t0), l / n, P, Tp);
+        for (int k = 0; k < 3; ++k)
+          acc[k] += Tacc * P[k];
+        Tacc *= Tp;
+      }
+      EXPECT_NEAR(T, Tacc, 1e-13);
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(C[k], acc[k], 1e-12 * (1 - T) + 1e-300) << scale << " " << t0 << " " << t1;
+    }
+  }
+}
+
+TEST(Integrators, ExactSplitsAtControlPoints)
+{
+  // A narrow opacity spike inside one long segment: the exact rule sees it, the trapezoid rule
+  // (ends only) does not; integrating in one call equals integrating in many small calls.
+  TransferFunction tf({ { 0, { 0, 0, 0 }, 0.0, 0 }, { 0.49, { 1, 0, 0 }, 0.0, 0 }, { 0.5, { 1, 0.5, 0 }, 0.9, 0 },
+                        { 0.51, { 1, 1, 0 }, 0.0, 0 }, { 1, { 1, 1, 1 }, 0.0, 0 } },
+    0.01);
+  ExactIntegrator ex(tf);
+  TrapezoidRule tr(tf);
+  RayAccum one, many, trap;
+  ex.Integrate(0.0, 1.0, 1.0, one);
+  for (int i = 0; i < 1000; ++i)
+    ex.Integrate(i / 1000.0, (i + 1) / 1000.0, 1e-3, many);
+  tr.Integrate(0.0, 1.0, 1.0, trap);
+  EXPECT_GT(one.Alpha(), 0.5);
+  EXPECT_NEAR(one.Alpha(), many.Alpha(), 1e-12);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(one.rgb[k], many.rgb[k], 1e-12);
+  EXPECT_EQ(trap.Alpha(), 0.0);
+  // Falling scalar too.
+  RayAccum down, downMany;
+  ex.Integrate(1.0, 0.0, 1.0, down);
+  for (int i = 0; i < 1000; ++i)
+    ex.Integrate(1.0 - i / 1000.0, 1.0 - (i + 1) / 1000.0, 1e-3, downMany);
+  EXPECT_NEAR(down.rgb[0], downMany.rgb[0], 1e-12);
+}
+
+TEST(Integrators, TrapezoidConvergesToExact)
+{
+  TransferFunction tf = TransferFunction::Preset("grey-ramp", 0, 1);
+  ExactIntegrator ex(tf);
+  TrapezoidRule tr(tf);
+  RayAccum e, t1, t2;
+  ex.Integrate(0.1, 0.9, 5.0, e);
+  tr.Integrate(0.1, 0.9, 5.0, t1);
+  for (int i = 0; i < 64; ++i)
+    tr.Integrate(0.1 + 0.8 * i / 64, 0.1 + 0.8 * (i + 1) / 64, 5.0 / 64, t2);
+  const double err1 = std::fabs(t1.rgb[0] - e.rgb[0]), err2 = std::fabs(t2.rgb[0] - e.rgb[0]);
+  EXPECT_GT(err1, 1e-3);
+  EXPECT_LT(err2, err1 / 100); // second order: 64x finer is ~4000x better
+}
+
+TEST(TransferFunction, OpacityToExtinctionAndVTKRoundTrip)
+{
+  vtkNew<vtkVolumeProperty> p;
+  vtkNew<vtkColorTransferFunction> c;
+  vtkNew<vtkPiecewiseFunction> o;
+  c->AddRGBPoint(0, 0, 0, 1);
+  c->AddRGBPoint(100, 1, 0, 0);
+  o->AddPoint(0, 0.0);
+  o->AddPoint(50, 0.5);
+  o->AddPoint(100, 1.0);
+  p->SetColor(c);
+  p->SetScalarOpacity(o);
+  p->SetScalarOpacityUnitDistance(2.0);
+  const TransferFunction tf = TransferFunction::FromVTK(p);
+  ASSERT_EQ(tf.Nodes().size(), 3u); // union of {0, 100} and {0, 50, 100}
+  double rgb[3], tau;
+  tf.Evaluate(50, rgb, tau);
+  EXPECT_NEAR(rgb[0], 0.5, 1e-12);
+  EXPECT_NEAR(rgb[2], 0.5, 1e-12);
+  EXPECT_NEAR(tau, -std::log(0.5) / 2.0, 1e-12);
+  tf.Evaluate(-10, rgb, tau); // clamped below
+  EXPECT_EQ(tau, 0.0);
+  vtkNew<vtkVolumeProperty> back;
+  tf.ToVTK(back);
+  EXPECT_NEAR(back->GetScalarOpacity()->GetValue(50), 0.5, 1e-12);
+  EXPECT_EQ(back->GetScalarOpacityUnitDistance(), 2.0);
+}
+
+TEST(TransferFunction, FileAndPresetErrors)
+{
+  const std::string dir = ART_TEST_OUTPUT;
+  const std::string good = dir + "/tf-good.txt", bad = dir + "/tf-bad.txt";
+  std::ofstream(good) << "# skin and bone\nunit-distance 2\n-1000 0 0 0 0\n0 1 0.5 0.5 0.2\n1000 1 1 1 0.9\n";
+  std::ofstream(bad) << "0 0 0 0 0\n10 1 1 zero 1\n";
+  const TransferFunction tf = TransferFunction::FromFile(good);
+  EXPECT_EQ(tf.Nodes().size(), 3u);
+  EXPECT_EQ(tf.UnitDistance(), 2.0);
+  try
+  {
+    TransferFunction::FromFile(bad);
+    FAIL() << "accepted a malformed line";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("line 2"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(TransferFunction::FromFile(dir + "/no-such-tf.txt"), Error);
+  EXPECT_THROW(TransferFunction::Preset("rainbow", 0, 1), Error);
+  for (const auto& name : TransferFunction::PresetNames())
+    EXPECT_GE(TransferFunction::Preset(name, -1024, 3071).Nodes().size(), 2u) << name;
+}

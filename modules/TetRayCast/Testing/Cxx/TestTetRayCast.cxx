@@ -1,0 +1,217 @@
+// The tet caster against closed forms: a linear field with a constant-opacity transfer function,
+// two tetrahedralisations, thread counts, a sphere's distance field iso-surface, and bad meshes.
+#include "Error.h"
+#include "MeshFixtures.h"
+#include "ParallelTiles.h"
+#include "TetRayCaster.h"
+
+#include <gtest/gtest.h>
+#include <vtkCamera.h>
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <cmath>
+
+using namespace art;
+
+namespace
+{
+double Linear(const Vec3& p) { return 0.3 + 0.2 * p.x - 0.1 * p.y + 0.15 * p.z; }
+
+// Red rises, green falls, blue constant; constant opacity 0.3 per 0.5 units.
+TransferFunction LinearTF(double lo, double hi)
+{
+  return TransferFunction({ { lo, { 0, 1, 0.5 }, 0.3, 0 }, { hi, { 1, 0, 0.5 }, 0.3, 0 } }, 0.5);
+}
+
+Camera ViewOf(const Box3& b, int w, int h, double az, double el)
+{
+  vtkNew<vtkCamera> cam;
+  cam->SetPosition(0, -1, 0);
+  cam->SetFocalPoint(0, 0, 0);
+  cam->SetViewUp(0, 0, 1);
+  Camera::Frame(cam, b, az, el, 1.3);
+  return Camera::FromVTK(cam, w, h);
+}
+} // namespace
+
+TEST(TetRayCast, LinearFieldMatchesClosedForm)
+{
+  const TetMesh m = fixtures::GridMesh(4, 3, 5, { 0, 0, 0 }, { 0.25, 1.0 / 3, 0.2 }, Linear, 6);
+  ASSERT_TRUE(m.IsConvex());
+  const double lo = -0.2, hi = 0.9;
+  RenderSettings s;
+  s.tf = LinearTF(lo, hi);
+  s.earlyTermination = 2.0;
+  const TetRayCaster rc(m, s);
+  const Camera cam = ViewOf(m.Bounds(), 48, 40, 30, 20);
+  Image img;
+  const RenderStats st = rc.Render(cam, img);
+  const double tau = -std::log(0.7) / 0.5;
+  int inside = 0;
+  for (int y = 0; y < img.Height(); ++y)
+    for (int x = 0; x < img.Width(); ++x)
+    {
+      const Ray r = cam.Generate(x, y);
+      double t0, t1, C[3] = { 0, 0, 0 }, a = 0;
+      if (m.Bounds().Clip(r, t0, t1) && t1 > t0)
+      {
+        ++inside;
+        const double L = t1 - t0, s0 = Linear(r.At(t0)), s1 = Linear(r.At(t1));
+        const double T = std::exp(-tau * L), J = -std::expm1(-tau * L) / (tau * L);
+        const double c0[3] = { (s0 - lo) / (hi - lo), (hi - s0) / (hi - lo), 0.5 };
+        const double c1[3] = { (s1 - lo) / (hi - lo), (hi - s1) / (hi - lo), 0.5 };
+        for (int k = 0; k < 3; ++k)
+          C[k] = c0[k] - c1[k] * T + (c1[k] - c0[k]) * J;
+        a = 1 - T;
+      }
+      const float* p = img.Pixel(x, y);
+      for (int k = 0; k < 3; ++k)
+        ASSERT_NEAR(p[k], C[k], 1e-5) << x << "," << y;
+      ASSERT_NEAR(p[3], a, 1e-5) << x << "," << y;
+    }
+  EXPECT_GT(inside, 500);
+  EXPECT_GT(st.counters.tetsCrossed, st.counters.hits);
+  EXPECT_LT(st.counters.entrySearches, st.counters.hits / 4) << "coherent entrance walk";
+}
+
+TEST(TetRayCast, TwoTetrahedralisationsGiveTheSameImage)
+{
+  const TetMesh a = fixtures::GridMesh(5, 5, 5, { -1, -1, -1 }, { 0.4, 0.4, 0.4 }, Linear, 6);
+  const TetMesh b = fixtures::GridMesh(5, 5, 5, { -1, -1, -1 }, { 0.4, 0.4, 0.4 }, Linear, 5);
+  EXPECT_EQ(a.NumberOfTets(), 750u);
+  EXPECT_EQ(b.NumberOfTets(), 625u);
+  RenderSettings s;
+  s.tf = TransferFunction({ { -0.2, { 0, 0, 1 }, 0.0, 0 }, { 0.2, { 0, 1, 0 }, 0.6, 0 }, { 0.6, { 1, 0, 0 }, 0.1, 0 },
+                            { 1.0, { 1, 1, 1 }, 0.9, 0 } },
+    0.3);
+  s.earlyTermination = 2.0;
+  const Camera cam = ViewOf(a.Bounds(), 40, 40, -35, 25);
+  Image ia, ib;
+  TetRayCaster(a, s).Render(cam, ia);
+  TetRayCaster(b, s).Render(cam, ib);
+  double worst = 0;
+  for (std::size_t i = 0; i < ia.Pixels().size(); ++i)
+    worst = std::max(worst, double(std::fabs(ia.Pixels()[i] - ib.Pixels()[i])));
+  EXPECT_LT(worst, 1e-6);
+}
+
+TEST(TetRayCast, ThreadCountDoesNotChangeTheImage)
+{
+  auto f = [](const Vec3& p) { return std::sin(3 * p.x) * std::cos(2 * p.y) + p.z; };
+  const TetMesh m = fixtures::GridMesh(8, 8, 8, { 0, 0, 0 }, { 0.125, 0.125, 0.125 }, f, 5);
+  RenderSettings s;
+  s.tf = TransferFunction::Preset("grey-ramp", m.ScalarRange(0), m.ScalarRange(1));
+  s.isos = { { 0.5, { { 1, 0.8, 0.6 } }, 0.4 } };
+  const Camera cam = ViewOf(m.Bounds(), 64, 48, 10, 10);
+  Image one, two;
+  const int before = GetThreadCount();
+  SetThreadCount(1);
+  TetRayCaster(m, s).Render(cam, one);
+  SetThreadCount(2);
+  TetRayCaster(m, s).Render(cam, two);
+  SetThreadCount(before);
+  EXPECT_EQ(one.Pixels(), two.Pixels());
+}
+
+TEST(TetRayCast, SphereIsoSurfaceLiesAtTheRadius)
+{
+  const Vec3 c(0.1, -0.05, 0.02);
+  const double R = 0.6, h = 0.1;
+  const TetMesh m = fixtures::GridMesh(20, 20, 20, { -1, -1, -1 }, { h, h, h },
+    [&](const Vec3& p) { return Length(p - c); }, 6);
+  RenderSettings s;
+  s.tf = TransferFunction({ { 0, { 0, 0, 0 }, 0.0, 0 }, { 2, { 0, 0, 0 }, 0.0, 0 } });
+  s.isos = { { R, { { 1, 1, 1 } }, 1.0 } };
+  const TetRayCaster rc(m, s);
+  int hits = 0;
+  for (int i = 0; i < 40; ++i)
+  {
+    // Rays from all around, aimed at points near the centre.
+    const double th = 0.7 + i * 2.399, z = -0.9 + 1.8 * i / 39.0;
+    const Vec3 dir = Normalize(Vec3(std::sqrt(1 - z * z) * std::cos(th), std::sqrt(1 - z * z) * std::sin(th), z));
+    const Vec3 aim = c + Vec3(0.05 * std::sin(i), 0.03 * std::cos(i), 0.02);
+    Ray r;
+    r.org = aim - dir * 3.0;
+    r.dir = dir;
+    const RayResult res = rc.Cast(r);
+    ASSERT_GT(res.firstIso, 0) << i;
+    const double err = std::fabs(Length(r.At(res.firstIso) - c) - R);
+    EXPECT_LT(err, 0.5 * h * h / R + 1e-9) << "ray " << i; // linear interpolation of |x|
+    EXPECT_NEAR(res.rgba[3], 1.0, 1e-12);
+    ++hits;
+  }
+  EXPECT_EQ(hits, 40);
+}
+
+TEST(TetRayCast, MaximumIntensity)
+{
+  const TetMesh m = fixtures::GridMesh(3, 3, 3, { 0, 0, 0 }, { 1, 1, 1 }, Linear, 6);
+  RenderSettings s;
+  s.tf = LinearTF(-0.2, 0.9);
+  s.mode = RenderSettings::Mode::MaxIntensity;
+  Ray r;
+  r.org = { -1, 1.5, 1.2 };
+  r.dir = { 1, 0, 0 };
+  const RayResult res = TetRayCaster(m, s).Cast(r);
+  EXPECT_NEAR(res.maxScalar, Linear({ 3, 1.5, 1.2 }), 1e-12);
+}
+
+TEST(TetMesh, FromVTKAndBadMeshes)
+{
+  vtkNew<vtkUnstructuredGrid> ug;
+  vtkNew<vtkPoints> pts;
+  pts->InsertNextPoint(0, 0, 0);
+  pts->InsertNextPoint(1, 0, 0);
+  pts->InsertNextPoint(0, 1, 0);
+  pts->InsertNextPoint(0, 0, 1);
+  pts->InsertNextPoint(1, 1, 1);
+  pts->InsertNextPoint(-1, -1, 0.5);
+  ug->SetPoints(pts);
+  vtkIdType t0[4] = { 0, 1, 2, 3 }, t1[4] = { 1, 2, 3, 4 };
+  ug->InsertNextCell(VTK_TETRA, 4, t0);
+  ug->InsertNextCell(VTK_TETRA, 4, t1);
+  EXPECT_THROW(TetMesh::FromVTK(ug), Error); // no point scalars
+  vtkNew<vtkDoubleArray> s;
+  s->SetName("f");
+  for (int i = 0; i < 6; ++i)
+    s->InsertNextValue(i);
+  ug->GetPointData()->SetScalars(s);
+  const TetMesh m = TetMesh::FromVTK(ug);
+  EXPECT_EQ(m.NumberOfTets(), 2u);
+  EXPECT_EQ(m.Neighbours(0)[0], 1); // face (1,2,3) is shared
+  EXPECT_EQ(m.BoundaryFaces().size(), 6u);
+  // A third tet on the same face is inconsistent.
+  vtkIdType t2[4] = { 1, 2, 3, 5 };
+  ug->InsertNextCell(VTK_TETRA, 4, t2);
+  try
+  {
+    TetMesh::FromVTK(ug, {}, nullptr, "three.vtu");
+    FAIL();
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("three.vtu: inconsistent neighbours"), std::string::npos) << e.what();
+  }
+  // A hexahedron is tetrahedralised with a note.
+  vtkNew<vtkUnstructuredGrid> hex;
+  vtkNew<vtkPoints> hp;
+  vtkNew<vtkDoubleArray> hs;
+  for (int i = 0; i < 8; ++i)
+  {
+    hp->InsertNextPoint(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    hs->InsertNextValue(i);
+  }
+  hex->SetPoints(hp);
+  hex->GetPointData()->SetScalars(hs);
+  vtkIdType h[8] = { 0, 1, 3, 2, 4, 5, 7, 6 };
+  hex->InsertNextCell(VTK_HEXAHEDRON, 8, h);
+  std::string note;
+  const TetMesh hm = TetMesh::FromVTK(hex, {}, &note);
+  EXPECT_GE(hm.NumberOfTets(), 5u);
+  EXPECT_NE(note.find("tetrahedralised"), std::string::npos);
+}

@@ -1,0 +1,153 @@
+// Degenerate rays and meshes, each checked against a brute-force reference that clips the ray
+// with every tet: rays exactly through vertices, along edges, inside faces, parallel to the axes;
+// sliver tets; non-convex meshes (an L-shape, a block with a tunnel) that rays enter twice.
+#include "MeshFixtures.h"
+#include "TetRayCaster.h"
+
+#include <gtest/gtest.h>
+#include <vtkCamera.h>
+#include <vtkNew.h>
+
+#include <cmath>
+
+using namespace art;
+
+namespace
+{
+double Wavy(const Vec3& p) { return 0.5 + 0.3 * std::sin(2.1 * p.x + 0.3) * std::cos(1.7 * p.y) + 0.2 * p.z; }
+
+RenderSettings Settings()
+{
+  RenderSettings s;
+  s.tf = TransferFunction({ { 0, { 0, 0, 1 }, 0.05, 0 }, { 0.4, { 0, 1, 0 }, 0.3, 0 }, { 0.5, { 1, 1, 0 }, 0.02, 0 },
+                            { 1, { 1, 0, 0 }, 0.5, 0 } },
+    0.7);
+  s.earlyTermination = 2.0;
+  return s;
+}
+
+void Check(const TetMesh& m, const TetRayCaster& rc, const Ray& r, const char* what, int expectPieces = -1)
+{
+  const RayResult got = rc.Cast(r);
+  const RayAccum ref = fixtures::BruteForce(m, rc.Settings().tf, r);
+  for (int k = 0; k < 3; ++k)
+    ASSERT_NEAR(got.rgba[k], ref.rgb[k], 1e-9) << what << " ch " << k << " org " << r.org.x << "," << r.org.y
+                                               << "," << r.org.z << " dir " << r.dir.x << "," << r.dir.y << ","
+                                               << r.dir.z;
+  ASSERT_NEAR(got.rgba[3], ref.Alpha(), 1e-9) << what;
+  if (expectPieces >= 0)
+    EXPECT_EQ(got.pieces, expectPieces) << what;
+}
+
+Ray MakeRay(const Vec3& o, const Vec3& d)
+{
+  Ray r;
+  r.org = o;
+  r.dir = d;
+  return r;
+}
+} // namespace
+
+TEST(TetStability, RaysThroughVerticesEdgesAndFaces)
+{
+  for (int scheme : { 5, 6 })
+  {
+    const TetMesh m = fixtures::GridMesh(4, 4, 4, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Wavy, scheme);
+    const TetRayCaster rc(m, Settings());
+    int n = 0;
+    // Parallel to each axis along grid lines (the ray lies in edges), through face centres
+    // (in faces), and through cell interiors.
+    for (int axis = 0; axis < 3; ++axis)
+      for (double u : { 0.0, 0.25, 0.5, 0.75, 1.0, 2.0 })
+        for (double v : { 0.0, 0.5, 0.6, 1.5, 2.0 })
+        {
+          Vec3 o, d;
+          o[axis] = -1;
+          o[(axis + 1) % 3] = u;
+          o[(axis + 2) % 3] = v;
+          d[axis] = 1;
+          Check(m, rc, MakeRay(o, d), "axis", 1);
+          d[axis] = -1;
+          o[axis] = 3;
+          Check(m, rc, MakeRay(o, d), "axis reversed", 1);
+          n += 2;
+        }
+    // Through pairs of vertices: along face and cube diagonals, through many vertices at once.
+    for (const auto& pq : std::vector<std::pair<Vec3, Vec3>>{ { { 0, 0, 0 }, { 2, 2, 2 } }, { { 2, 0, 0 }, { 0, 2, 2 } },
+           { { 0, 0.5, 0 }, { 2, 0.5, 2 } }, { { 0.5, 0, 1 }, { 0.5, 2, 1 } }, { { 0, 0, 0.5 }, { 1, 2, 0.5 } },
+           { { 1, 1, 0 }, { 1.5, 0.5, 2 } }, { { 0, 2, 0 }, { 2, 0, 0 } }, { { 0, 0, 0 }, { 1, 0.5, 2 } } })
+    {
+      const Vec3 d = pq.second - pq.first;
+      Check(m, rc, MakeRay(pq.first - d * 0.7, d), "vertex to vertex", 1);
+      Check(m, rc, MakeRay(pq.second + d * 0.7, -d), "vertex to vertex reversed", 1);
+      n += 2;
+    }
+    // Rays that only touch the mesh: along an outer edge and in an outer face.
+    Check(m, rc, MakeRay({ -1, 0, 0 }, { 1, 0, 0 }), "outer edge");
+    Check(m, rc, MakeRay({ -1, 0.7, 0 }, { 1, 0.1, 0 }), "outer face");
+    EXPECT_EQ(n, 2 * 3 * 6 * 5 + 16);
+  }
+}
+
+TEST(TetStability, SliverTets)
+{
+  // Squash one layer of cells to 1e-7 and jitter the rest: needles and slivers everywhere.
+  auto warp = [](const Vec3& p) {
+    Vec3 q = p;
+    if (p.z > 1.01)
+      q.z = p.z - 0.5 + 1e-7;
+    q.x += 0.03 * std::sin(7 * p.y + 3 * p.z);
+    return q;
+  };
+  const TetMesh m = fixtures::GridMesh(5, 5, 4, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Wavy, 5, {}, warp);
+  const TetRayCaster rc(m, Settings());
+  for (int i = 0; i < 200; ++i)
+  {
+    const Vec3 a(0.1 + 2.3 * std::fmod(i * 0.618, 1.0), 0.1 + 2.3 * std::fmod(i * 0.414, 1.0), -1);
+    const Vec3 b(0.2 + 2.1 * std::fmod(i * 0.732, 1.0), 0.2 + 2.1 * std::fmod(i * 0.236, 1.0), 3);
+    Check(m, rc, MakeRay(a, b - a), "sliver", 1);
+  }
+  // Rays grazing the squashed layer.
+  Check(m, rc, MakeRay({ -1, 1.1, 1.0 + 5e-8 }, { 1, 0.01, 0 }), "inside the sliver layer");
+  Check(m, rc, MakeRay({ -1, 1.0, 1.0 }, { 1, 0, 0 }), "on the sliver layer's base");
+}
+
+TEST(TetStability, NonConvexRaysEnterTwice)
+{
+  // L-shape: a quarter of the block removed.
+  const TetMesh L = fixtures::GridMesh(4, 4, 2, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Wavy, 6,
+    [](int i, int j, int) { return !(i >= 2 && j >= 2); });
+  EXPECT_FALSE(L.IsConvex());
+  const TetRayCaster rc(L, Settings());
+  // Across both arms: leaves at x = 1, re-enters... along y at x in (0,1) it stays inside once.
+  Check(L, rc, MakeRay({ 3.4, -1, 0.3 }, { -1, 1, 0.05 }), "L twice", 2);
+  Check(L, rc, MakeRay({ 1.6, 2.5, 0.4 }, { -1, -1.2, 0 }), "L corner");
+  for (int i = 0; i < 100; ++i)
+  {
+    const double a = 0.3 + i * 0.05;
+    const Vec3 dir(std::cos(a), std::sin(a), 0.1 * std::sin(3 * a));
+    const Vec3 c(1.0 + 0.2 * std::sin(i), 1.0 + 0.2 * std::cos(i * 1.3), 0.5);
+    Check(L, rc, MakeRay(c - dir * 4, dir), "L random");
+  }
+  // A block with a tunnel through it (a hole): rays along x cross the tunnel.
+  const TetMesh T = fixtures::GridMesh(5, 3, 3, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Wavy, 5,
+    [](int i, int j, int k) { return !(j == 1 && k == 1 && i > 0 && i < 4); });
+  EXPECT_FALSE(T.IsConvex());
+  const TetRayCaster rt(T, Settings());
+  Check(T, rt, MakeRay({ -1, 0.7, 0.7 }, { 1, 0.01, 0.02 }), "tunnel axis", 2);
+  Check(T, rt, MakeRay({ 1.2, 0.75, -1 }, { 0.05, 0, 1 }), "across tunnel", 2);
+  // The image path (screen buckets) agrees with single rays.
+  vtkNew<vtkCamera> cam;
+  cam->SetPosition(-1, -3, 2);
+  cam->SetFocalPoint(1, 1, 0.5);
+  const Camera c = Camera::FromVTK(cam, 40, 30);
+  Image img;
+  rc.Render(c, img);
+  for (int y = 0; y < 30; y += 3)
+    for (int x = 0; x < 40; x += 3)
+    {
+      const RayAccum ref = fixtures::BruteForce(L, rc.Settings().tf, c.Generate(x, y));
+      EXPECT_NEAR(img.Pixel(x, y)[3], ref.Alpha(), 1e-6) << x << "," << y;
+      EXPECT_NEAR(img.Pixel(x, y)[0], ref.rgb[0], 1e-6) << x << "," << y;
+    }
+}

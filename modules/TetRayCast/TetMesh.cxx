@@ -1,0 +1,324 @@
+#include "TetMesh.h"
+
+#include "Error.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellType.h>
+#include <vtkDataArray.h>
+#include <vtkDataSetTriangleFilter.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace art
+{
+constexpr int TetMesh::FaceVertex[4][3];
+
+namespace
+{
+struct FaceKey
+{
+  int a, b, c; // sorted vertex ids
+  int ref;     // 4 * tet + face
+  bool odd;    // the face's outward order is an odd permutation of (a, b, c)
+  bool operator<(const FaceKey& o) const { return std::tie(a, b, c) < std::tie(o.a, o.b, o.c); }
+  bool Same(const FaceKey& o) const { return a == o.a && b == o.b && c == o.c; }
+};
+
+FaceKey MakeKey(int x, int y, int z, int ref)
+{
+  int inversions = (x > y) + (x > z) + (y > z);
+  int v[3] = { x, y, z };
+  std::sort(v, v + 3);
+  return { v[0], v[1], v[2], ref, (inversions & 1) != 0 };
+}
+} // namespace
+
+TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vector<std::array<int, 4>> tets)
+  : Points(std::move(points))
+  , Values(std::move(scalars))
+  , Tets(std::move(tets))
+{
+  const int np = static_cast<int>(Points.size());
+  if (Values.size() != Points.size())
+  {
+    throw Error("point scalars do not match the points (" + std::to_string(Values.size()) + " values for " +
+      std::to_string(np) + " points)");
+  }
+  if (Tets.empty())
+  {
+    throw Error("mesh has no tetrahedra");
+  }
+  for (std::size_t i = 0; i < Points.size(); ++i)
+  {
+    if (!IsFinite(Points[i]) || !std::isfinite(Values[i]))
+    {
+      throw Error("point " + std::to_string(i) + " has a non-finite coordinate or scalar");
+    }
+  }
+  Range[0] = *std::min_element(Values.begin(), Values.end());
+  Range[1] = *std::max_element(Values.begin(), Values.end());
+  const std::size_t nt = Tets.size();
+  Planes.resize(4 * nt);
+  Interp.resize(nt);
+  Gradients.assign(Points.size(), Vec3());
+  std::vector<double> weight(Points.size(), 0.0);
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    auto& v = Tets[t];
+    for (int id : v)
+    {
+      if (id < 0 || id >= np)
+      {
+        throw Error("tet " + std::to_string(t) + " refers to point " + std::to_string(id) + " of " + std::to_string(np));
+      }
+    }
+    Vec3 e1 = Points[v[1]] - Points[v[0]], e2 = Points[v[2]] - Points[v[0]], e3 = Points[v[3]] - Points[v[0]];
+    double det = Dot(e1, Cross(e2, e3));
+    if (det < 0)
+    {
+      std::swap(v[0], v[1]);
+      std::swap(e1, e2);
+      e3 = Points[v[3]] - Points[v[0]];
+      e1 = Points[v[1]] - Points[v[0]];
+      e2 = Points[v[2]] - Points[v[0]];
+      det = -det;
+    }
+    // Linear interpolant by Cramer's rule; a flat tet keeps a constant (its mean).
+    const double f0 = Values[v[0]];
+    Vec3 g;
+    if (det > 0)
+    {
+      g = (Cross(e2, e3) * (Values[v[1]] - f0) + Cross(e3, e1) * (Values[v[2]] - f0) +
+            Cross(e1, e2) * (Values[v[3]] - f0)) / det;
+    }
+    const double a = det > 0 ? f0 - Dot(g, Points[v[0]])
+                             : 0.25 * (f0 + Values[v[1]] + Values[v[2]] + Values[v[3]]);
+    Interp[t] = { a, g.x, g.y, g.z };
+    const double vol = det / 6.0;
+    for (int id : v)
+    {
+      Gradients[id] += g * vol;
+      weight[id] += vol;
+    }
+    for (int f = 0; f < 4; ++f)
+    {
+      const Vec3& p0 = Points[v[FaceVertex[f][0]]];
+      const Vec3 n = Normalize(Cross(Points[v[FaceVertex[f][1]]] - p0, Points[v[FaceVertex[f][2]]] - p0));
+      Planes[4 * t + f] = { n, Dot(n, p0) };
+    }
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = i + 1; j < 4; ++j)
+      {
+        LongestEdge = std::max(LongestEdge, Length(Points[v[i]] - Points[v[j]]));
+      }
+    }
+  }
+  for (std::size_t i = 0; i < Points.size(); ++i)
+  {
+    if (weight[i] > 0)
+    {
+      Gradients[i] = Gradients[i] / weight[i];
+    }
+    Box.Expand(Points[i]);
+  }
+
+  // Face neighbours: sort the 4n faces by their vertex set; pairs are shared faces.
+  std::vector<FaceKey> keys;
+  keys.reserve(4 * nt);
+  for (std::size_t t = 0; t < nt; ++t)
+  {
+    for (int f = 0; f < 4; ++f)
+    {
+      const auto& fv = FaceVertex[f];
+      keys.push_back(MakeKey(Tets[t][fv[0]], Tets[t][fv[1]], Tets[t][fv[2]], static_cast<int>(4 * t + f)));
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  Nbrs.assign(nt, { -1, -1, -1, -1 });
+  for (std::size_t i = 0; i < keys.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < keys.size() && keys[j].Same(keys[i]))
+    {
+      ++j;
+    }
+    const int ta = keys[i].ref / 4, fa = keys[i].ref % 4;
+    if (j - i > 2)
+    {
+      throw Error("inconsistent neighbours: a face of tet " + std::to_string(ta) + " is shared by " +
+        std::to_string(j - i) + " tets");
+    }
+    if (j - i == 2)
+    {
+      const int tb = keys[i + 1].ref / 4, fb = keys[i + 1].ref % 4;
+      if (keys[i].odd == keys[i + 1].odd)
+      {
+        throw Error("inconsistent neighbours: tets " + std::to_string(ta) + " and " + std::to_string(tb) +
+          " lie on the same side of their shared face (overlap)");
+      }
+      Nbrs[ta][fa] = tb;
+      Nbrs[tb][fb] = ta;
+    }
+    else
+    {
+      Boundary.push_back({ ta, fa });
+    }
+    i = j;
+  }
+
+  // Boundary edge adjacency, and convexity: every boundary dihedral convex, one boundary shell.
+  struct EdgeKey
+  {
+    int a, b, face, k;
+    bool operator<(const EdgeKey& o) const { return std::tie(a, b) < std::tie(o.a, o.b); }
+  };
+  std::vector<EdgeKey> edges;
+  edges.reserve(3 * Boundary.size());
+  for (std::size_t b = 0; b < Boundary.size(); ++b)
+  {
+    const auto& v = Tets[Boundary[b][0]];
+    const auto& fv = FaceVertex[Boundary[b][1]];
+    for (int k = 0; k < 3; ++k)
+    {
+      const int x = v[fv[k]], y = v[fv[(k + 1) % 3]];
+      edges.push_back({ std::min(x, y), std::max(x, y), static_cast<int>(b), k });
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  BoundaryAdj.assign(Boundary.size(), { -1, -1, -1 });
+  const double eps = 1e-9 * std::max(Box.Diagonal(), 1e-300);
+  for (std::size_t i = 0; i < edges.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j].a == edges[i].a && edges[j].b == edges[i].b)
+    {
+      ++j;
+    }
+    if (j - i != 2)
+    {
+      Convex = false; // open or non-manifold boundary
+      i = j;
+      continue;
+    }
+    const EdgeKey &p = edges[i], &q = edges[i + 1];
+    BoundaryAdj[p.face][p.k] = q.face;
+    BoundaryAdj[q.face][q.k] = p.face;
+    // q's third vertex must not lie in front of p's plane.
+    const auto& qb = Boundary[q.face];
+    const int third = Tets[qb[0]][FaceVertex[qb[1]][(q.k + 2) % 3]];
+    const Plane& pl = Planes[4 * Boundary[p.face][0] + Boundary[p.face][1]];
+    if (Dot(pl.n, Points[third]) - pl.d > eps)
+    {
+      Convex = false;
+    }
+    i = j;
+  }
+  if (Convex && !Boundary.empty())
+  {
+    std::vector<char> seen(Boundary.size(), 0);
+    std::vector<int> stack{ 0 };
+    seen[0] = 1;
+    std::size_t count = 1;
+    while (!stack.empty())
+    {
+      const int b = stack.back();
+      stack.pop_back();
+      for (int n : BoundaryAdj[b])
+      {
+        if (n >= 0 && !seen[n])
+        {
+          seen[n] = 1;
+          ++count;
+          stack.push_back(n);
+        }
+      }
+    }
+    Convex = count == Boundary.size();
+  }
+}
+
+TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, std::string* note, const std::string& file)
+{
+  if (!grid || grid->GetNumberOfCells() == 0)
+  {
+    throw Error("mesh has no cells", file);
+  }
+  vtkSmartPointer<vtkUnstructuredGrid> ug = grid;
+  bool allTets = true;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells() && allTets; ++c)
+  {
+    allTets = grid->GetCellType(c) == VTK_TETRA;
+  }
+  if (!allTets)
+  {
+    vtkNew<vtkDataSetTriangleFilter> tri;
+    tri->SetInputData(grid);
+    tri->TetrahedraOnlyOn();
+    tri->Update();
+    ug = tri->GetOutput();
+    if (note)
+    {
+      *note = "non-tetrahedral cells were tetrahedralised (" + std::to_string(grid->GetNumberOfCells()) +
+        " cells -> " + std::to_string(ug->GetNumberOfCells()) + " tets)";
+    }
+    if (ug->GetNumberOfCells() == 0)
+    {
+      throw Error("mesh has no 3D cells to tetrahedralise", file);
+    }
+  }
+  vtkDataArray* s = array.empty() ? ug->GetPointData()->GetScalars() : ug->GetPointData()->GetArray(array.c_str());
+  if (!s && array.empty())
+  {
+    for (int i = 0; i < ug->GetPointData()->GetNumberOfArrays() && !s; ++i)
+    {
+      vtkDataArray* a = ug->GetPointData()->GetArray(i);
+      if (a && a->GetNumberOfComponents() == 1)
+      {
+        s = a;
+      }
+    }
+  }
+  if (!s)
+  {
+    throw Error(array.empty() ? "mesh has no point scalars" : "mesh has no point array '" + array + "'", file);
+  }
+  const vtkIdType np = ug->GetNumberOfPoints();
+  std::vector<Vec3> pts(np);
+  std::vector<double> val(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double p[3];
+    ug->GetPoint(i, p);
+    pts[i] = Vec3(p);
+    val[i] = s->GetComponent(i, 0);
+  }
+  std::vector<std::array<int, 4>> tets;
+  tets.reserve(ug->GetNumberOfCells());
+  vtkIdType n;
+  const vtkIdType* ids;
+  for (vtkIdType c = 0; c < ug->GetNumberOfCells(); ++c)
+  {
+    if (ug->GetCellType(c) != VTK_TETRA)
+    {
+      continue;
+    }
+    ug->GetCellPoints(c, n, ids);
+    tets.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]),
+      static_cast<int>(ids[3]) });
+  }
+  try
+  {
+    return TetMesh(std::move(pts), std::move(val), std::move(tets));
+  }
+  catch (const Error& e)
+  {
+    throw Error(e.problem(), file);
+  }
+}
+} // namespace art

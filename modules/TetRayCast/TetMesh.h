@@ -1,0 +1,87 @@
+// TetMesh: the compact arrays the cell-by-cell ray caster walks (Grosso, Luerig & Ertl 1997, sec. 5):
+// positively oriented tets, face neighbours (-1 on the boundary), outward face planes, each tet's
+// linear interpolant f = a + g.x, volume-weighted vertex gradients, and the boundary faces with
+// their edge adjacency (for the entrance walk). Face i of a tet is the one opposite vertex i.
+#ifndef art_TetMesh_h
+#define art_TetMesh_h
+
+#include "AdaptiveRTTetRayCastModule.h"
+#include "Box3.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+class vtkUnstructuredGrid;
+
+namespace art
+{
+class ADAPTIVERTTETRAYCAST_EXPORT TetMesh
+{
+public:
+  /// Vertices of face f (opposite vertex f), ordered counter-clockwise seen from outside.
+  static constexpr int FaceVertex[4][3] = { { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 3 }, { 0, 2, 1 } };
+
+  struct Plane
+  {
+    Vec3 n;   ///< outward unit normal
+    double d; ///< n.x = d on the face
+  };
+
+  TetMesh() = default;
+  /// Builds from points, scalars and tets (4 point ids each, any orientation). Throws art::Error
+  /// for out-of-range ids, non-finite values or inconsistent neighbours (a face in 3+ tets,
+  /// overlapping tets on both sides of a face).
+  TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vector<std::array<int, 4>> tets);
+
+  /// Any vtkUnstructuredGrid with point scalars (the active ones, or `array` by name). Cells
+  /// other than tets are tetrahedralised first (vtkDataSetTriangleFilter); `note` says so.
+  static TetMesh FromVTK(vtkUnstructuredGrid* grid, const std::string& array = {},
+    std::string* note = nullptr, const std::string& file = {});
+
+  std::size_t NumberOfTets() const { return Tets.size(); }
+  std::size_t NumberOfPoints() const { return Points.size(); }
+
+  const std::vector<Vec3>& PointsArray() const { return Points; }
+  const std::vector<double>& Scalars() const { return Values; }
+  const std::array<int, 4>& Tet(std::size_t t) const { return Tets[t]; }
+  const std::array<int, 4>& Neighbours(std::size_t t) const { return Nbrs[t]; }
+  Plane FacePlane(std::size_t t, int f) const { return Planes[4 * t + f]; }
+  /// f(x) = c[0] + c[1] x + c[2] y + c[3] z inside tet t.
+  const std::array<double, 4>& Interpolant(std::size_t t) const { return Interp[t]; }
+  const Vec3& VertexGradient(int v) const { return Gradients[v]; }
+  double Evaluate(std::size_t t, const Vec3& p) const
+  {
+    const auto& c = Interp[t];
+    return c[0] + c[1] * p.x + c[2] * p.y + c[3] * p.z;
+  }
+
+  /// Boundary face b is face BoundaryFace(b)[1] of tet BoundaryFace(b)[0].
+  const std::vector<std::array<int, 2>>& BoundaryFaces() const { return Boundary; }
+  /// The boundary face across edge k (vertices k, k+1 of FaceVertex order) of boundary face b.
+  const std::array<int, 3>& BoundaryAdjacency(std::size_t b) const { return BoundaryAdj[b]; }
+
+  const Box3& Bounds() const { return Box; }
+  double ScalarRange(int i) const { return Range[i]; }
+  /// False for a mesh with holes, cavities, several pieces or a concave boundary.
+  bool IsConvex() const { return Convex; }
+  /// Largest edge length (VTK's pre-integration table is sized by it).
+  double MaxEdge() const { return LongestEdge; }
+
+private:
+  std::vector<Vec3> Points;
+  std::vector<double> Values;
+  std::vector<std::array<int, 4>> Tets, Nbrs;
+  std::vector<Plane> Planes;
+  std::vector<std::array<double, 4>> Interp;
+  std::vector<Vec3> Gradients;
+  std::vector<std::array<int, 2>> Boundary;
+  std::vector<std::array<int, 3>> BoundaryAdj;
+  Box3 Box;
+  double Range[2] = { 0, 0 };
+  double LongestEdge = 0;
+  bool Convex = true;
+};
+} // namespace art
+
+#endif

@@ -1,0 +1,242 @@
+#include "TetRayCaster.h"
+
+#include "EntryFinder.h"
+#include "ExactIntegrator.h"
+#include "ParallelTiles.h"
+#include "TetWalker.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+
+namespace art
+{
+struct TetRayCaster::Impl
+{
+  // Integrates one ray over every piece of the mesh it passes through, front to back.
+  template <class Rule>
+  static void Trace(const TetRayCaster& rc, const Rule& rule, const TetWalker& w, const Ray& r,
+    const std::vector<Entry>& entries, RayResult& res, Counters& c, std::uint64_t& nudges)
+  {
+    const TetMesh& M = rc.M;
+    const RenderSettings& S = rc.S;
+    const bool mip = S.mode == RenderSettings::Mode::MaxIntensity;
+    const double dirLen = Length(r.dir);
+    const Vec3 view = r.dir / dirLen;
+    RayAccum acc;
+    double tDone = -1e300;
+    bool stop = false;
+    double fr[8];
+    int fi[8];
+    for (const Entry& e : entries)
+    {
+      if (stop)
+      {
+        break;
+      }
+      if (e.x.t < tDone)
+      {
+        continue; // inside a piece already integrated (a duplicate at an edge)
+      }
+      ++res.pieces;
+      const auto& bf = M.BoundaryFaces()[e.face];
+      FaceCrossing out;
+      auto visit = [&](int t, const FaceCrossing& in, const FaceCrossing& ex) {
+        if (mip)
+        {
+          res.maxScalar = std::max(res.maxScalar, std::max(in.s, ex.s));
+          return true;
+        }
+        const double len = (ex.t - in.t) * dirLen;
+        double fa = 0.0, sa = in.s;
+        // Iso crossings on this segment, half-open so a crossing at a shared face counts once.
+        int n = 0;
+        for (std::size_t k = 0; k < S.isos.size() && n < 8; ++k)
+        {
+          const double v = S.isos[k].value;
+          if ((in.s < v) != (ex.s < v))
+          {
+            fr[n] = (v - in.s) / (ex.s - in.s);
+            fi[n++] = static_cast<int>(k);
+          }
+        }
+        for (int a = 1; a < n; ++a)
+        {
+          for (int b = a; b > 0 && fr[b] < fr[b - 1]; --b)
+          {
+            std::swap(fr[b], fr[b - 1]);
+            std::swap(fi[b], fi[b - 1]);
+          }
+        }
+        for (int k = 0; k < n; ++k)
+        {
+          const IsoSurface& iso = S.isos[fi[k]];
+          rule.Integrate(sa, iso.value, len * (fr[k] - fa), acc);
+          fa = fr[k];
+          sa = iso.value;
+          // Gouraud-style normal: vertex gradients interpolated at the hit point.
+          const auto& tv = M.Tet(t);
+          Vec3 g;
+          for (int i = 0; i < 4; ++i)
+          {
+            g += M.VertexGradient(tv[i]) * (in.w[i] + fa * (ex.w[i] - in.w[i]));
+          }
+          const double shade = S.ambient + S.diffuse * std::fabs(Dot(Normalize(g), view));
+          const double a = iso.opacity;
+          for (int ch = 0; ch < 3; ++ch)
+          {
+            acc.rgb[ch] += acc.T * a * shade * iso.rgb[ch];
+          }
+          acc.T *= 1.0 - a;
+          if (res.firstIso < 0)
+          {
+            res.firstIso = in.t + fa * (ex.t - in.t);
+          }
+        }
+        rule.Integrate(sa, ex.s, len * (1.0 - fa), acc);
+        if (acc.Alpha() >= S.earlyTermination)
+        {
+          stop = true;
+          return false;
+        }
+        return true;
+      };
+      w.Walk(bf[0], bf[1], e.x, visit, out, c.tetsCrossed, nudges);
+      tDone = out.t;
+    }
+    if (mip)
+    {
+      if (res.pieces > 0)
+      {
+        double rgb[3], tau;
+        S.tf.Evaluate(res.maxScalar, rgb, tau);
+        const double a = S.tf.Alpha(res.maxScalar);
+        res.rgba[0] = rgb[0] * a, res.rgba[1] = rgb[1] * a, res.rgba[2] = rgb[2] * a, res.rgba[3] = a;
+      }
+      return;
+    }
+    res.rgba[0] = acc.rgb[0], res.rgba[1] = acc.rgb[1], res.rgba[2] = acc.rgb[2], res.rgba[3] = acc.Alpha();
+  }
+
+  static void Entries(const TetRayCaster& rc, const EntryFinder& f, const TetWalker& w, const Ray& r,
+    int px, int py, std::vector<Entry>& out, int& hint, Counters& c)
+  {
+    const bool convex = rc.M.IsConvex();
+    if (convex || !rc.Hits)
+    {
+      f.Find(w, r, px, py, !convex, out, hint, c);
+      return;
+    }
+    // Non-convex with a boundary all-hits query: keep the hits that enter.
+    thread_local std::vector<std::pair<double, long long>> hits;
+    hits.clear();
+    rc.Hits(rc.HitsCtx, r, hits, c);
+    out.clear();
+    for (const auto& h : hits)
+    {
+      const auto& bf = rc.M.BoundaryFaces()[h.second];
+      Entry e;
+      if (w.Crosses(bf[0], bf[1], -1, e.x) && e.x.t >= r.tmin)
+      {
+        e.face = static_cast<int>(h.second);
+        out.push_back(e);
+      }
+    }
+    std::stable_sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) { return a.x.t < b.x.t; });
+  }
+
+  template <class Rule>
+  static RenderStats RenderWith(const TetRayCaster& rc, const Rule& rule, const Camera& cam, Image& img, Progress* p)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    img = Image(cam.Width(), cam.Height());
+    const EntryFinder finder(rc.M, cam);
+    std::atomic<std::uint64_t> nudges{ 0 };
+    RenderStats st;
+    st.counters = ForEachTile(cam.Width(), cam.Height(), rc.S.tileSize,
+      [&](const Tile& tile, Counters& c) {
+        std::vector<Entry> entries;
+        std::uint64_t nd = 0;
+        int hint = -1;
+        for (int y = tile.y0; y < tile.y1; ++y)
+        {
+          // Scan lines in alternating directions: each ray starts next to the previous one.
+          const bool back = ((y - tile.y0) & 1) != 0;
+          for (int i = tile.x0; i < tile.x1; ++i)
+          {
+            const int x = back ? tile.x1 - 1 - (i - tile.x0) : i;
+            ++c.rays;
+            Ray r = cam.Generate(x, y);
+            double t0, t1;
+            if (!rc.M.Bounds().Clip(r, t0, t1))
+            {
+              continue;
+            }
+            const TetWalker w(rc.M, r);
+            Entries(rc, finder, w, r, x, y, entries, hint, c);
+            if (entries.empty())
+            {
+              continue;
+            }
+            ++c.hits;
+            RayResult res;
+            Trace(rc, rule, w, r, entries, res, c, nd);
+            img.Set(x, y, { float(res.rgba[0]), float(res.rgba[1]), float(res.rgba[2]), float(res.rgba[3]) });
+          }
+        }
+        nudges += nd;
+      },
+      p);
+    st.nudges = nudges;
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return st;
+  }
+};
+
+TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
+  : M(mesh), S(std::move(settings))
+{
+  if (S.tf.Nodes().empty())
+  {
+    S.tf = TransferFunction::Preset("grey-ramp", M.ScalarRange(0), M.ScalarRange(1));
+  }
+}
+
+TetRayCaster::~TetRayCaster() = default;
+
+RenderStats TetRayCaster::Render(const Camera& cam, Image& img, Progress* progress) const
+{
+  if (S.rule == RenderSettings::Rule::Trapezoid)
+  {
+    return Impl::RenderWith(*this, TrapezoidRule(S.tf), cam, img, progress);
+  }
+  return Impl::RenderWith(*this, ExactIntegrator(S.tf), cam, img, progress);
+}
+
+RayResult TetRayCaster::Cast(const Ray& r) const
+{
+  RayResult res;
+  double t0, t1;
+  if (!r.IsValid() || !M.Bounds().Clip(r, t0, t1))
+  {
+    return res;
+  }
+  const EntryFinder finder(M);
+  const TetWalker w(M, r);
+  std::vector<Entry> entries;
+  int hint = -1;
+  Counters c;
+  std::uint64_t nudges = 0;
+  finder.Find(w, r, -1, -1, true, entries, hint, c);
+  if (S.rule == RenderSettings::Rule::Trapezoid)
+  {
+    Impl::Trace(*this, TrapezoidRule(S.tf), w, r, entries, res, c, nudges);
+  }
+  else
+  {
+    Impl::Trace(*this, ExactIntegrator(S.tf), w, r, entries, res, c, nudges);
+  }
+  return res;
+}
+} // namespace art

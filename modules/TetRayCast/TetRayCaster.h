@@ -1,0 +1,98 @@
+// TetRayCaster: cell-by-cell ray casting of a tetrahedral grid (Grosso, Luerig & Ertl 1997, sec. 5):
+// entry face per ray (EntryFinder), face-to-face traversal (TetWalker), emission-absorption per
+// segment with the exact or the trapezoid rule (ExactIntegrator), iso-surfaces with Phong-shaded
+// interpolated vertex gradients, maximum intensity, early ray termination. Non-convex meshes are
+// integrated over every piece the ray passes through. Image tiles run over art::ForEachTile, so
+// the image is identical for any thread count.
+#ifndef art_TetRayCaster_h
+#define art_TetRayCaster_h
+
+#include "AdaptiveRTTetRayCastModule.h"
+#include "Camera.h"
+#include "Counters.h"
+#include "Image.h"
+#include "TetMesh.h"
+#include "TransferFunction.h"
+
+#include <array>
+#include <vector>
+
+namespace art
+{
+class Progress;
+
+struct IsoSurface
+{
+  double value;
+  std::array<double, 3> rgb{ { 1, 1, 1 } };
+  double opacity = 1.0; ///< constant surface opacity
+};
+
+struct RenderSettings
+{
+  enum class Mode
+  {
+    Composite,   ///< emission-absorption (plus iso-surfaces)
+    MaxIntensity ///< colour and opacity of the largest scalar on the ray
+  };
+  enum class Rule
+  {
+    Exact,    ///< split at control points, closed form per piece
+    Trapezoid ///< the seed paper's rule
+  };
+  TransferFunction tf;
+  Mode mode = Mode::Composite;
+  Rule rule = Rule::Exact;
+  double earlyTermination = 0.99; ///< stop when opacity reaches this (>= 1: never)
+  std::vector<IsoSurface> isos;
+  double ambient = 0.3, diffuse = 0.7; ///< headlight shading of iso-surfaces
+  int tileSize = 16;
+};
+
+struct RayResult
+{
+  double rgba[4] = { 0, 0, 0, 0 }; ///< premultiplied colour, opacity
+  double firstIso = -1;            ///< t of the first iso-surface hit, -1 for none
+  double maxScalar = -1e300;
+  int pieces = 0;                  ///< times the ray entered the mesh
+};
+
+struct RenderStats
+{
+  Counters counters;
+  double seconds = 0;
+  std::uint64_t nudges = 0; ///< fallback exits (rays in face planes)
+};
+
+class ADAPTIVERTTETRAYCAST_EXPORT TetRayCaster
+{
+public:
+  /// Keeps a reference to `mesh`, which must outlive the caster.
+  TetRayCaster(const TetMesh& mesh, RenderSettings settings);
+  ~TetRayCaster();
+
+  /// Renders cam's view into img (resized to the camera): premultiplied RGBA, not composited.
+  RenderStats Render(const Camera& cam, Image& img, Progress* progress = nullptr) const;
+  /// One ray on its own (tests every boundary face for the entry: for checks, not for speed).
+  RayResult Cast(const Ray& r) const;
+
+  const RenderSettings& Settings() const { return S; }
+  const TetMesh& Mesh() const { return M; }
+
+  /// Optional: every entry point of a non-convex mesh from an all-hits query over its boundary
+  /// triangles (one per boundary face, in BoundaryFaces order): fills t values sorted, de-duplicated.
+  using AllHitsFn = void (*)(const void* ctx, const Ray& r, std::vector<std::pair<double, long long>>& hits,
+    Counters& c);
+  void SetBoundaryQuery(AllHitsFn fn, const void* ctx) { Hits = fn, HitsCtx = ctx; }
+
+  struct Impl;
+
+private:
+  const TetMesh& M;
+  RenderSettings S;
+  AllHitsFn Hits = nullptr;
+  const void* HitsCtx = nullptr;
+};
+} // namespace art
+
+#endif

@@ -1,0 +1,259 @@
+#include "TransferFunction.h"
+
+#include "Error.h"
+
+#include <vtkColorTransferFunction.h>
+#include <vtkNew.h>
+#include <vtkPiecewiseFunction.h>
+#include <vtkVolumeProperty.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace art
+{
+namespace
+{
+double TauOf(double alpha, double unit)
+{
+  const double a = std::min(std::max(alpha, 0.0), 1.0 - 1e-6);
+  return -std::log1p(-a) / unit;
+}
+} // namespace
+
+TransferFunction::TransferFunction(std::vector<Node> nodes, double unitDistance)
+  : Unit(unitDistance)
+{
+  if (nodes.empty())
+  {
+    throw Error("transfer function has no control points");
+  }
+  if (!(unitDistance > 0.0) || !std::isfinite(unitDistance))
+  {
+    throw Error("transfer function unit distance must be positive");
+  }
+  std::stable_sort(nodes.begin(), nodes.end(), [](const Node& a, const Node& b) { return a.s < b.s; });
+  for (Node& n : nodes)
+  {
+    if (!std::isfinite(n.s) || !std::isfinite(n.alpha))
+    {
+      throw Error("transfer function has a non-finite control point");
+    }
+    for (double& c : n.rgb)
+    {
+      c = std::min(std::max(c, 0.0), 1.0);
+    }
+    n.alpha = std::min(std::max(n.alpha, 0.0), 1.0);
+    n.tau = TauOf(n.alpha, Unit);
+    if (!N.empty() && N.back().s == n.s)
+    {
+      N.back() = n;
+    }
+    else
+    {
+      N.push_back(n);
+    }
+  }
+}
+
+TransferFunction TransferFunction::FromVTK(vtkVolumeProperty* p)
+{
+  if (!p)
+  {
+    throw Error("no volume property");
+  }
+  vtkColorTransferFunction* ctf = p->GetRGBTransferFunction(0);
+  vtkPiecewiseFunction* otf = p->GetScalarOpacity(0);
+  std::vector<double> s;
+  double v[6];
+  for (int i = 0; ctf && i < ctf->GetSize(); ++i)
+  {
+    ctf->GetNodeValue(i, v);
+    s.push_back(v[0]);
+  }
+  for (int i = 0; otf && i < otf->GetSize(); ++i)
+  {
+    otf->GetNodeValue(i, v);
+    s.push_back(v[0]);
+  }
+  if (s.empty())
+  {
+    throw Error("volume property has neither colour nor opacity control points");
+  }
+  std::sort(s.begin(), s.end());
+  s.erase(std::unique(s.begin(), s.end()), s.end());
+  std::vector<Node> nodes;
+  for (double x : s)
+  {
+    Node n{ x, { 1, 1, 1 }, 1.0, 0.0 };
+    if (ctf && ctf->GetSize() > 0)
+    {
+      ctf->GetColor(x, n.rgb);
+    }
+    if (otf && otf->GetSize() > 0)
+    {
+      n.alpha = otf->GetValue(x);
+    }
+    nodes.push_back(n);
+  }
+  return TransferFunction(std::move(nodes), p->GetScalarOpacityUnitDistance(0));
+}
+
+void TransferFunction::ToVTK(vtkVolumeProperty* p) const
+{
+  vtkNew<vtkColorTransferFunction> ctf;
+  vtkNew<vtkPiecewiseFunction> otf;
+  for (const Node& n : N)
+  {
+    ctf->AddRGBPoint(n.s, n.rgb[0], n.rgb[1], n.rgb[2]);
+    otf->AddPoint(n.s, n.alpha);
+  }
+  p->SetColor(0, ctf);
+  p->SetScalarOpacity(0, otf);
+  p->SetScalarOpacityUnitDistance(0, Unit);
+  p->SetInterpolationTypeToLinear();
+}
+
+std::vector<std::string> TransferFunction::PresetNames()
+{
+  return { "ct-skin-bone", "ct-bone", "grey-ramp", "constant" };
+}
+
+TransferFunction TransferFunction::Preset(const std::string& name, double lo, double hi)
+{
+  if (!(hi > lo))
+  {
+    hi = lo + 1.0;
+  }
+  // CT presets in Hounsfield units when the data look like CT, else at fractions of the range.
+  const bool hu = lo <= -500.0 && hi >= 500.0;
+  auto at = [&](double h, double frac) { return hu ? h : lo + frac * (hi - lo); };
+  std::vector<Node> n;
+  if (name == "ct-skin-bone")
+  {
+    n = { { lo, { 0, 0, 0 }, 0.0, 0 }, { at(-600, 0.15), { 0.75, 0.45, 0.3 }, 0.0, 0 },
+      { at(-450, 0.2), { 0.9, 0.6, 0.45 }, 0.12, 0 }, { at(-300, 0.25), { 0.9, 0.65, 0.5 }, 0.0, 0 },
+      { at(200, 0.45), { 0.95, 0.85, 0.7 }, 0.0, 0 }, { at(450, 0.55), { 1.0, 0.95, 0.85 }, 0.25, 0 },
+      { at(1200, 0.8), { 1.0, 1.0, 0.95 }, 0.7, 0 }, { std::max(hi, at(1200, 0.8) + 1), { 1, 1, 1 }, 0.8, 0 } };
+  }
+  else if (name == "ct-bone")
+  {
+    n = { { lo, { 0, 0, 0 }, 0.0, 0 }, { at(200, 0.45), { 0.9, 0.8, 0.65 }, 0.0, 0 },
+      { at(500, 0.6), { 1.0, 0.95, 0.85 }, 0.3, 0 }, { std::max(hi, at(500, 0.6) + 1), { 1, 1, 1 }, 0.8, 0 } };
+  }
+  else if (name == "grey-ramp")
+  {
+    n = { { lo, { 0, 0, 0 }, 0.0, 0 }, { hi, { 1, 1, 1 }, 0.2, 0 } };
+  }
+  else if (name == "constant")
+  {
+    n = { { lo, { 0, 0, 0 }, 0.05, 0 }, { hi, { 1, 1, 1 }, 0.05, 0 } };
+  }
+  else
+  {
+    std::string all;
+    for (const auto& p : PresetNames())
+    {
+      all += (all.empty() ? "" : ", ") + p;
+    }
+    throw Error("unknown transfer-function preset '" + name + "' (known: " + all + ")");
+  }
+  return TransferFunction(std::move(n), 1.0);
+}
+
+TransferFunction TransferFunction::FromFile(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    throw Error("cannot open transfer-function file", path);
+  }
+  std::vector<Node> nodes;
+  double unit = 1.0;
+  std::string line;
+  for (int no = 1; std::getline(in, line); ++no)
+  {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos)
+    {
+      line.erase(hash);
+    }
+    std::istringstream ss(line);
+    std::string first;
+    if (!(ss >> first))
+    {
+      continue;
+    }
+    if (first == "unit-distance")
+    {
+      if (!(ss >> unit) || !(unit > 0))
+      {
+        throw Error("line " + std::to_string(no) + ": unit-distance needs a positive number", path);
+      }
+      continue;
+    }
+    Node n{};
+    std::istringstream all(line);
+    std::string extra;
+    if (!(all >> n.s >> n.rgb[0] >> n.rgb[1] >> n.rgb[2] >> n.alpha) || (all >> extra))
+    {
+      throw Error("line " + std::to_string(no) + ": expected 'scalar r g b opacity'", path);
+    }
+    for (double c : { n.rgb[0], n.rgb[1], n.rgb[2], n.alpha })
+    {
+      if (!(c >= 0.0 && c <= 1.0))
+      {
+        throw Error("line " + std::to_string(no) + ": colour and opacity must lie in [0, 1]", path);
+      }
+    }
+    nodes.push_back(n);
+  }
+  if (nodes.empty())
+  {
+    throw Error("no control points (expected lines 'scalar r g b opacity')", path);
+  }
+  return TransferFunction(std::move(nodes), unit);
+}
+
+int TransferFunction::Locate(double s) const
+{
+  if (s < N.front().s)
+  {
+    return -1;
+  }
+  const auto it = std::upper_bound(N.begin(), N.end(), s, [](double v, const Node& n) { return v < n.s; });
+  return static_cast<int>(it - N.begin()) - 1;
+}
+
+void TransferFunction::Evaluate(double s, double rgb[3], double& tau) const
+{
+  const int i = Locate(s);
+  if (i < 0 || i + 1 >= static_cast<int>(N.size()))
+  {
+    const Node& n = i < 0 ? N.front() : N.back();
+    rgb[0] = n.rgb[0], rgb[1] = n.rgb[1], rgb[2] = n.rgb[2];
+    tau = n.tau;
+    return;
+  }
+  const Node &a = N[i], &b = N[i + 1];
+  const double w = (s - a.s) / (b.s - a.s);
+  for (int k = 0; k < 3; ++k)
+  {
+    rgb[k] = a.rgb[k] + w * (b.rgb[k] - a.rgb[k]);
+  }
+  tau = a.tau + w * (b.tau - a.tau);
+}
+
+double TransferFunction::Alpha(double s) const
+{
+  const int i = Locate(s);
+  if (i < 0 || i + 1 >= static_cast<int>(N.size()))
+  {
+    return (i < 0 ? N.front() : N.back()).alpha;
+  }
+  const Node &a = N[i], &b = N[i + 1];
+  return a.alpha + (s - a.s) / (b.s - a.s) * (b.alpha - a.alpha);
+}
+} // namespace art

@@ -1,0 +1,66 @@
+// TransferFunction: scalar -> colour and extinction, piecewise linear between the union of the
+// control points of a vtkVolumeProperty's colour and scalar-opacity functions (the emission-
+// absorption model of Max 1995, as VTK's volume mappers use it).
+//
+// Opacity to extinction: VTK's scalar opacity alpha is the opacity of a slab ScalarOpacityUnitDistance
+// (u) thick, so the extinction coefficient is tau = -ln(1 - alpha) / u (per world unit). We convert at
+// every control point and keep tau (not alpha) linear between them, which is what makes the exact
+// segment rule closed-form; alpha = 1 is clamped to 1 - 1e-6. Colour functions are read as RGB,
+// linear between nodes (VTK's default midpoint 0.5 / sharpness 0); outside the nodes values clamp.
+#ifndef art_TransferFunction_h
+#define art_TransferFunction_h
+
+#include "AdaptiveRTTetRayCastModule.h"
+
+#include <string>
+#include <vector>
+
+class vtkVolumeProperty;
+
+namespace art
+{
+class ADAPTIVERTTETRAYCAST_EXPORT TransferFunction
+{
+public:
+  struct Node
+  {
+    double s;      ///< scalar value
+    double rgb[3]; ///< colour in [0, 1]
+    double alpha;  ///< opacity per unit distance, as VTK states it
+    double tau;    ///< extinction per world unit
+  };
+
+  TransferFunction() = default;
+  /// Nodes in any order; duplicates at one scalar keep the last. Throws art::Error when empty.
+  TransferFunction(std::vector<Node> nodes, double unitDistance = 1.0);
+
+  /// The colour, scalar-opacity functions and unit distance of `p` (component 0).
+  static TransferFunction FromVTK(vtkVolumeProperty* p);
+  /// "ct-skin-bone", "ct-bone", "grey-ramp", "constant" laid over the data range [lo, hi]
+  /// (CT presets use Hounsfield units when the range looks like CT, else fractions of it).
+  static TransferFunction Preset(const std::string& name, double lo, double hi);
+  static std::vector<std::string> PresetNames();
+  /// A text file, one node per line: "scalar r g b opacity" ('#' comments; optional first line
+  /// "unit-distance U"). Throws art::Error naming the file and line for anything malformed.
+  static TransferFunction FromFile(const std::string& path);
+
+  /// Fills a vtkVolumeProperty with the same functions (for VTK's own mappers and the viewer).
+  void ToVTK(vtkVolumeProperty* p) const;
+
+  const std::vector<Node>& Nodes() const { return N; }
+  double UnitDistance() const { return Unit; }
+
+  /// Index i of the interval [s_i, s_{i+1}] holding s (-1 below the first node, size-1 above).
+  int Locate(double s) const;
+  /// Colour and extinction at s.
+  void Evaluate(double s, double rgb[3], double& tau) const;
+  /// Opacity per unit distance at s (for maximum-intensity projection).
+  double Alpha(double s) const;
+
+private:
+  std::vector<Node> N;
+  double Unit = 1.0;
+};
+} // namespace art
+
+#endif
