@@ -1,0 +1,87 @@
+// Accelerator: the one query interface of the ray tracing machine (Dmitriev, "Efficiency issues on
+// Ray Tracing Machine"): closest hit, any hit (shadows) and all hits along a segment (light through
+// transparent surfaces), over brute force, a uniform grid, the recursive grid and the octree.
+#ifndef art_Accelerator_h
+#define art_Accelerator_h
+
+#include "AdaptiveRTTriangleGridModule.h"
+#include "Counters.h"
+#include "Ray.h"
+#include "TriangleStore.h"
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace art
+{
+class Progress;
+
+struct Hit
+{
+  double t = std::numeric_limits<double>::infinity();
+  long long triangle = -1; ///< input-order index (TriangleStore::OriginalIndex)
+  double u = 0, v = 0;     ///< barycentric weights of the triangle's 2nd and 3rd vertex
+  long long record = -1;   ///< record index in the store (for shading: Store().Record(record))
+};
+
+enum class AcceleratorKind
+{
+  BruteForce,
+  UniformGrid,
+  RecursiveGrid,
+  Octree
+};
+
+struct AcceleratorOptions
+{
+  AcceleratorKind kind = AcceleratorKind::RecursiveGrid;
+  int voxelThreshold = 0; ///< R: VOX_NTRG_THR, O: VX_THRESHOLD; 0 = default
+  int subdivisions = 0;   ///< R: N_SUB_VOXELS per axis; 0 = default
+  bool topLevelGrid = true; ///< R: false starts from one voxel holding the whole scene
+  int planeWeight = 0;    ///< O: PLANE_WEIGHT; 0 = default
+  double cellsPerTriangle = 0; ///< uniform grid density; 0 = default
+};
+
+class ADAPTIVERTTRIANGLEGRID_EXPORT Accelerator
+{
+public:
+  virtual ~Accelerator() = default;
+  /// Nearest hit with t in [r.tmin, r.tmax]. A NaN or zero direction hits nothing.
+  virtual bool Closest(const Ray& r, Hit& hit, Counters& c) const = 0;
+  /// True when anything is hit in [r.tmin, r.tmax] (stops at the first).
+  virtual bool Any(const Ray& r, Counters& c) const = 0;
+  /// Every hit in [r.tmin, r.tmax], sorted by t; where the ray crosses an edge or vertex shared
+  /// by several triangles the surface is reported once.
+  virtual void All(const Ray& r, std::vector<Hit>& hits, Counters& c) const = 0;
+  /// Bytes of the acceleration structure, not counting the store.
+  virtual size_t MemoryBytes() const = 0;
+  /// "uniform grid 64x60x48", "R[16,4]", "O[4,15]" ...
+  virtual std::string Name() const = 0;
+
+  /// Closest hits of many rays in parallel (art::ForEachRange); hits[i] belongs to rays[i].
+  Counters ClosestBatch(const std::vector<Ray>& rays, std::vector<Hit>& hits) const;
+  /// Any-hit of many rays in parallel; occluded[i] is 1 when rays[i] hits something.
+  Counters AnyBatch(const std::vector<Ray>& rays, std::vector<unsigned char>& occluded) const;
+
+  const TriangleStore& Store() const { return *S; }
+  std::shared_ptr<const TriangleStore> StorePtr() const { return S; }
+
+protected:
+  explicit Accelerator(std::shared_ptr<const TriangleStore> s) : S(std::move(s)) {}
+  std::shared_ptr<const TriangleStore> S;
+};
+
+ADAPTIVERTTRIANGLEGRID_EXPORT std::unique_ptr<Accelerator> MakeAccelerator(
+  std::shared_ptr<const TriangleStore> store, const AcceleratorOptions& options = {});
+
+/// Sorts hits by t (then record) and removes repeats: the same record twice, and hits closer than
+/// `tol` in t on triangles that share a vertex (a ray through a shared edge or vertex).
+ADAPTIVERTTRIANGLEGRID_EXPORT void SortAndMergeHits(const TriangleStore& s, std::vector<Hit>& hits, double tol);
+
+/// "brute", "uniform", "recursive", "octree" -> kind; throws art::Error otherwise.
+ADAPTIVERTTRIANGLEGRID_EXPORT AcceleratorKind AcceleratorKindFromName(const std::string& name);
+} // namespace art
+
+#endif

@@ -1,0 +1,166 @@
+// AcceleratorQueries: closest, any and all-hits queries written once over any traversal.
+// A structure supplies Walk(prep, t0, t1, visitor): it calls visitor(ids, count, tExit) for each
+// voxel the ray enters, front to back, and stops when the visitor returns true. Closest keeps the
+// nearest hit found so far and stops once it lies before the current voxel's exit (so a hit found
+// in an earlier voxel but lying further on is never taken for the answer too early).
+#ifndef art_AcceleratorQueries_h
+#define art_AcceleratorQueries_h
+
+#include "Accelerator.h"
+#include "Box3.h"
+#include "WatertightTest.h"
+
+#include <cmath>
+
+namespace art
+{
+template <class Derived>
+class WalkingAccelerator : public Accelerator
+{
+public:
+  using Accelerator::Accelerator;
+
+  bool Closest(const Ray& r, Hit& hit, Counters& c) const override
+  {
+    ++c.rays;
+    hit = Hit();
+    if (!r.IsValid() || !(r.tmin <= r.tmax))
+    {
+      return false;
+    }
+    const RayPrep p(r);
+    const TriangleRecord* rec = S->Data();
+    const PlaneRecord* planes = S->Planes().data();
+    const double planeMargin = 1e-5 * S->Bounds().Diagonal();
+    Mailbox mb;
+    double best = r.tmax, bu = 0, bv = 0;
+    long long bestRec = -1;
+    std::uint32_t checkedPlane = ~0u;
+    bool planeCulled = false;
+    auto visit = [&](const std::uint32_t* ids, std::uint32_t n, double tExit) {
+      for (std::uint32_t k = 0; k < n; ++k)
+      {
+        const std::uint32_t id = ids[k];
+        if (mb.Seen(id))
+        {
+          continue; // before touching the record: a repeat costs no memory traffic
+        }
+        const TriangleRecord& t = rec[id];
+        if (t.flags & TriangleRecord::SharedPlane || t.plane == checkedPlane)
+        {
+          // Coplanar triangles share a plane: one ray/plane distance culls them all when the
+          // plane lies beyond the nearest hit so far (or before tmin).
+          if (t.plane != checkedPlane)
+          {
+            checkedPlane = t.plane;
+            const PlaneRecord& pl = planes[t.plane];
+            const double den = pl.n[0] * p.dir.x + pl.n[1] * p.dir.y + pl.n[2] * p.dir.z;
+            const double num = pl.d - (pl.n[0] * p.org.x + pl.n[1] * p.org.y + pl.n[2] * p.org.z);
+            planeCulled = false;
+            if (den != 0.0)
+            {
+              const double tp = num / den, margin = planeMargin / std::fabs(den);
+              planeCulled = tp > best + margin || tp < r.tmin - margin;
+            }
+          }
+          if (planeCulled)
+          {
+            continue; // for good: the bound only shrinks
+          }
+        }
+        ++c.trianglesTested;
+        double th, u, v;
+        if (IntersectTriangle(p, t, r.tmin, best, th, u, v))
+        {
+          best = th;
+          bu = u;
+          bv = v;
+          bestRec = id;
+          checkedPlane = ~0u; // the bound moved: planes must be checked again
+        }
+      }
+      return bestRec >= 0 && best <= tExit;
+    };
+    static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
+    if (bestRec < 0)
+    {
+      return false;
+    }
+    hit.t = best;
+    hit.u = bu;
+    hit.v = bv;
+    hit.record = bestRec;
+    hit.triangle = S->OriginalIndex(static_cast<size_t>(bestRec));
+    ++c.hits;
+    return true;
+  }
+
+  bool Any(const Ray& r, Counters& c) const override
+  {
+    ++c.rays;
+    if (!r.IsValid() || !(r.tmin <= r.tmax))
+    {
+      return false;
+    }
+    const RayPrep p(r);
+    const TriangleRecord* rec = S->Data();
+    Mailbox mb;
+    bool found = false;
+    auto visit = [&](const std::uint32_t* ids, std::uint32_t n, double) {
+      for (std::uint32_t k = 0; k < n; ++k)
+      {
+        if (mb.Seen(ids[k]))
+        {
+          continue;
+        }
+        ++c.trianglesTested;
+        double th, u, v;
+        if (IntersectTriangle(p, rec[ids[k]], r.tmin, r.tmax, th, u, v))
+        {
+          found = true;
+          return true;
+        }
+      }
+      return false;
+    };
+    static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
+    c.hits += found ? 1 : 0;
+    return found;
+  }
+
+  void All(const Ray& r, std::vector<Hit>& hits, Counters& c) const override
+  {
+    ++c.rays;
+    hits.clear();
+    if (!r.IsValid() || !(r.tmin <= r.tmax))
+    {
+      return;
+    }
+    const RayPrep p(r);
+    const TriangleRecord* rec = S->Data();
+    Mailbox mb;
+    auto visit = [&](const std::uint32_t* ids, std::uint32_t n, double) {
+      for (std::uint32_t k = 0; k < n; ++k)
+      {
+        if (mb.Seen(ids[k]))
+        {
+          continue;
+        }
+        ++c.trianglesTested;
+        Hit h;
+        if (IntersectTriangle(p, rec[ids[k]], r.tmin, r.tmax, h.t, h.u, h.v))
+        {
+          h.record = ids[k];
+          hits.push_back(h);
+        }
+      }
+      return false;
+    };
+    static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
+    SortAndMergeHits(*S, hits, 1e-7 * S->Bounds().Diagonal() * p.invLen);
+    c.hits += hits.empty() ? 0 : 1;
+  }
+};
+} // namespace art
+
+#endif

@@ -1,0 +1,118 @@
+// Octree O[VX_THRESHOLD, PLANE_WEIGHT] (Dmitriev, "Efficiency issues on Ray Tracing Machine",
+// section 4): a voxel splits in two along each axis while its cost exceeds VX_THRESHOLD, where a
+// triangle coplanar with one already counted costs 1/PLANE_WEIGHT (one ray/plane distance serves
+// all of a plane's triangles, and no split separates them across the plane). The traversal is the
+// N = 2 descent: the three mid-plane distances order the at most four children a ray crosses.
+#ifndef art_Octree_h
+#define art_Octree_h
+
+#include "AcceleratorQueries.h"
+
+#include <cmath>
+
+namespace art
+{
+class ADAPTIVERTTRIANGLEGRID_EXPORT Octree : public WalkingAccelerator<Octree>
+{
+public:
+  Octree(std::shared_ptr<const TriangleStore> s, const AcceleratorOptions& o);
+
+  size_t MemoryBytes() const override { return Nodes.size() * sizeof(ONode) + Ids.size() * sizeof(std::uint32_t); }
+  std::string Name() const override;
+  int Depth() const { return DepthBuilt; }
+  size_t NodeCount() const { return Nodes.size(); }
+
+  template <class Visitor>
+  void Walk(const RayPrep& p, double tmin, double tmax, Visitor& visit, Counters& c) const
+  {
+    Ray r;
+    r.org = p.org;
+    r.dir = p.dir;
+    r.tmin = tmin;
+    r.tmax = tmax;
+    double t0, t1;
+    if (Nodes.empty() || !Root.Clip(r, t0, t1))
+    {
+      return;
+    }
+    const double lo[3] = { Root.lo.x, Root.lo.y, Root.lo.z }, hi[3] = { Root.hi.x, Root.hi.y, Root.hi.z };
+    WalkNode(0, lo, hi, p, t0, t1, visit, c);
+  }
+
+private:
+  struct ONode
+  {
+    std::uint32_t first, count; ///< count == Internal: first is the first of 8 children
+  };
+  static constexpr std::uint32_t Internal = 0xffffffffu;
+
+  template <class Visitor>
+  bool WalkNode(std::uint32_t n, const double lo[3], const double hi[3], const RayPrep& p, double t0,
+    double t1, Visitor& visit, Counters& c) const
+  {
+    ++c.voxelsVisited;
+    const ONode node = Nodes[n];
+    if (node.count != Internal)
+    {
+      return node.count != 0 && visit(Ids.data() + node.first, node.count, t1);
+    }
+    double mid[3], tm[3];
+    int bits = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      mid[a] = 0.5 * (lo[a] + hi[a]);
+      const double d = p.dir[a];
+      tm[a] = d != 0.0 ? (mid[a] - p.org[a]) * p.inv[a] : std::numeric_limits<double>::infinity();
+      // The child holding the entry point, decided from the same mid-plane distances the walk uses.
+      const bool high = d > 0 ? tm[a] <= t0 : (d < 0 ? !(tm[a] <= t0) : p.org[a] >= mid[a]);
+      bits |= high ? (1 << a) : 0;
+    }
+    double tcur = t0;
+    for (int k = 0; k < 4; ++k)
+    {
+      double tcross = std::numeric_limits<double>::infinity();
+      int axis = -1;
+      for (int a = 0; a < 3; ++a)
+      {
+        const bool high = bits & (1 << a);
+        if (((p.dir[a] > 0 && !high) || (p.dir[a] < 0 && high)) && tm[a] < tcross)
+        {
+          tcross = tm[a];
+          axis = a;
+        }
+      }
+      const double tEx = std::min(tcross, t1);
+      double clo[3], chi[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        const bool high = bits & (1 << a);
+        clo[a] = high ? mid[a] : lo[a];
+        chi[a] = high ? hi[a] : mid[a];
+      }
+      if (WalkNode(node.first + bits, clo, chi, p, tcur, tEx, visit, c))
+      {
+        return true;
+      }
+      if (axis < 0 || !(tcross < t1))
+      {
+        return false;
+      }
+      bits ^= 1 << axis;
+      tcur = std::max(tcur, tcross);
+    }
+    return false;
+  }
+
+  void BuildNode(std::uint32_t n, const double lo[3], const double hi[3], std::vector<std::uint32_t>& ids, int depth,
+    int stuck);
+  double Cost(const std::vector<std::uint32_t>& ids) const;
+
+  std::vector<ONode> Nodes;
+  std::vector<std::uint32_t> Ids;
+  Box3 Root;
+  int Thr = 0, Weight = 0, DepthBuilt = 0;
+  size_t IdBudget = 0;
+};
+} // namespace art
+
+#endif

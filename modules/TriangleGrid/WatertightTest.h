@@ -1,0 +1,106 @@
+// WatertightTest: the watertight ray/triangle test of Woop, Benthin & Wald, "Watertight
+// Ray/Triangle Intersection" (JCGT 2(1), 2013), in double precision on the store's float vertices,
+// plus the per-ray set-up and a small mailbox shared by every accelerator's traversal.
+#ifndef art_WatertightTest_h
+#define art_WatertightTest_h
+
+#include "Ray.h"
+#include "TriangleStore.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+namespace art
+{
+/// Per-ray constants: the shear of Woop et al. (section 3) and the reciprocal direction for DDA.
+struct RayPrep
+{
+  Vec3 org, dir, inv;
+  int kx = 0, ky = 1, kz = 2;
+  double Sx = 0, Sy = 0, Sz = 1;
+  double invLen = 1; ///< 1 / |dir|
+
+  explicit RayPrep(const Ray& r) : org(r.org), dir(r.dir)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      inv[a] = 1.0 / dir[a]; // +-0 gives +-inf, which the slab and DDA code expect
+    }
+    const double ax = std::fabs(dir.x), ay = std::fabs(dir.y), az = std::fabs(dir.z);
+    kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+    kx = (kz + 1) % 3;
+    ky = (kx + 1) % 3;
+    if (dir[kz] < 0)
+    {
+      std::swap(kx, ky); // keep the winding, so the sign of det says which side was hit
+    }
+    Sx = dir[kx] / dir[kz];
+    Sy = dir[ky] / dir[kz];
+    Sz = 1.0 / dir[kz];
+    invLen = 1.0 / Length(dir);
+  }
+};
+
+/// Tests one record; accepts t in [tmin, tmax]. u, v weight vertices 1 and 2.
+/// Edge functions are computed per vertex pair from per-vertex values, so the two triangles of a
+/// shared edge get exactly opposite values and a ray can never pass between them. The module is
+/// compiled with -ffp-contract=off so no fused multiply-add breaks that symmetry.
+inline bool IntersectTriangle(const RayPrep& r, const TriangleRecord& t, double tmin, double tmax,
+  double& tHit, double& u, double& v)
+{
+  const double Ax0 = double(t.p[0][r.kx]) - r.org[r.kx], Ay0 = double(t.p[0][r.ky]) - r.org[r.ky],
+               Az0 = double(t.p[0][r.kz]) - r.org[r.kz];
+  const double Bx0 = double(t.p[1][r.kx]) - r.org[r.kx], By0 = double(t.p[1][r.ky]) - r.org[r.ky],
+               Bz0 = double(t.p[1][r.kz]) - r.org[r.kz];
+  const double Cx0 = double(t.p[2][r.kx]) - r.org[r.kx], Cy0 = double(t.p[2][r.ky]) - r.org[r.ky],
+               Cz0 = double(t.p[2][r.kz]) - r.org[r.kz];
+  const double Ax = Ax0 - r.Sx * Az0, Ay = Ay0 - r.Sy * Az0;
+  const double Bx = Bx0 - r.Sx * Bz0, By = By0 - r.Sy * Bz0;
+  const double Cx = Cx0 - r.Sx * Cz0, Cy = Cy0 - r.Sy * Cz0;
+  const double U = Cx * By - Cy * Bx;
+  const double V = Ax * Cy - Ay * Cx;
+  const double W = Bx * Ay - By * Ax;
+  if ((U < 0 || V < 0 || W < 0) && (U > 0 || V > 0 || W > 0))
+  {
+    return false;
+  }
+  const double det = U + V + W;
+  if (det == 0.0)
+  {
+    return false; // the ray lies in the triangle's plane, or the triangle is degenerate
+  }
+  const double T = U * (r.Sz * Az0) + V * (r.Sz * Bz0) + W * (r.Sz * Cz0);
+  const double th = T / det;
+  if (!(th >= tmin && th <= tmax))
+  {
+    return false;
+  }
+  tHit = th;
+  u = V / det;
+  v = W / det;
+  return true;
+}
+
+/// A direct-mapped mailbox (one per ray): skips re-testing a triangle met in the previous voxels.
+/// A collision only costs a repeated test; queries are correct without it.
+struct Mailbox
+{
+  static constexpr int Slots = 32;
+  std::uint32_t id[Slots];
+  Mailbox() { std::memset(id, 0xff, sizeof(id)); }
+  /// True when `t` was already tested; records it otherwise.
+  bool Seen(std::uint32_t t)
+  {
+    std::uint32_t& s = id[t & (Slots - 1)];
+    if (s == t)
+    {
+      return true;
+    }
+    s = t;
+    return false;
+  }
+};
+} // namespace art
+
+#endif
