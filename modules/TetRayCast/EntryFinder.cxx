@@ -44,7 +44,7 @@ EntryFinder::EntryFinder(const TetMesh& m, const Camera& cam)
   {
     const auto& v = M.Tet(bf[b][0]);
     const int* fv = TetMesh::FaceVertex[bf[b][1]];
-    const TetMesh::Plane pl = M.FacePlane(bf[b][0], bf[b][1]);
+    const TetMesh::Plane& pl = M.BoundaryPlane(b);
     const Vec3& p0 = M.PointsArray()[v[fv[0]]];
     if ((par ? Dot(fwd, pl.n) : Dot(p0 - eye, pl.n)) > 0)
     {

@@ -6,8 +6,10 @@
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetTriangleFilter.h>
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkSMPTools.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
@@ -63,7 +65,6 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
   Range[0] = *std::min_element(Values.begin(), Values.end());
   Range[1] = *std::max_element(Values.begin(), Values.end());
   const std::size_t nt = Tets.size();
-  Planes.resize(4 * nt);
   Interp.resize(nt);
   Gradients.assign(Points.size(), Vec3());
   std::vector<double> weight(Points.size(), 0.0);
@@ -105,12 +106,6 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
       Gradients[id] += g * vol;
       weight[id] += vol;
     }
-    for (int f = 0; f < 4; ++f)
-    {
-      const Vec3& p0 = Points[v[FaceVertex[f][0]]];
-      const Vec3 n = Normalize(Cross(Points[v[FaceVertex[f][1]]] - p0, Points[v[FaceVertex[f][2]]] - p0));
-      Planes[4 * t + f] = { n, Dot(n, p0) };
-    }
     for (int i = 0; i < 4; ++i)
     {
       for (int j = i + 1; j < 4; ++j)
@@ -139,7 +134,7 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
       keys.push_back(MakeKey(Tets[t][fv[0]], Tets[t][fv[1]], Tets[t][fv[2]], static_cast<int>(4 * t + f)));
     }
   }
-  std::sort(keys.begin(), keys.end());
+  vtkSMPTools::Sort(keys.begin(), keys.end());
   Nbrs.assign(nt, { -1, -1, -1, -1 });
   for (std::size_t i = 0; i < keys.size();)
   {
@@ -172,6 +167,12 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
     i = j;
   }
 
+  BPlanes.reserve(Boundary.size());
+  for (const auto& b : Boundary)
+  {
+    BPlanes.push_back(FacePlane(b[0], b[1]));
+  }
+
   // Boundary edge adjacency, and convexity: every boundary dihedral convex, one boundary shell.
   struct EdgeKey
   {
@@ -190,7 +191,7 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
       edges.push_back({ std::min(x, y), std::max(x, y), static_cast<int>(b), k });
     }
   }
-  std::sort(edges.begin(), edges.end());
+  vtkSMPTools::Sort(edges.begin(), edges.end());
   BoundaryAdj.assign(Boundary.size(), { -1, -1, -1 });
   const double eps = 1e-9 * std::max(Box.Diagonal(), 1e-300);
   for (std::size_t i = 0; i < edges.size();)
@@ -212,7 +213,7 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
     // q's third vertex must not lie in front of p's plane.
     const auto& qb = Boundary[q.face];
     const int third = Tets[qb[0]][FaceVertex[qb[1]][(q.k + 2) % 3]];
-    const Plane& pl = Planes[4 * Boundary[p.face][0] + Boundary[p.face][1]];
+    const Plane& pl = BPlanes[p.face];
     if (Dot(pl.n, Points[third]) - pl.d > eps)
     {
       Convex = false;
@@ -241,6 +242,64 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
     }
     Convex = count == Boundary.size();
   }
+}
+
+TetMesh::Plane TetMesh::FacePlane(std::size_t t, int f) const
+{
+  const auto& v = Tets[t];
+  const Vec3& p0 = Points[v[FaceVertex[f][0]]];
+  const Vec3 n = Normalize(Cross(Points[v[FaceVertex[f][1]]] - p0, Points[v[FaceVertex[f][2]]] - p0));
+  return { n, Dot(n, p0) };
+}
+
+TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
+{
+  vtkDataArray* s = image ? image->GetPointData()->GetScalars() : nullptr;
+  int d[3] = { 0, 0, 0 };
+  if (image)
+  {
+    image->GetDimensions(d);
+  }
+  if (!s || d[0] < 2 || d[1] < 2 || d[2] < 2)
+  {
+    throw Error("volume needs point scalars and at least 2 x 2 x 2 voxels", file);
+  }
+  const long long np = static_cast<long long>(d[0]) * d[1] * d[2];
+  if (5 * (d[0] - 1LL) * (d[1] - 1) * (d[2] - 1) > 2000000000LL)
+  {
+    throw Error("volume too large for full-resolution tets", file);
+  }
+  double o[3], h[3];
+  image->GetOrigin(o);
+  image->GetSpacing(h);
+  std::vector<Vec3> pts(np);
+  std::vector<double> val(np);
+  for (int k = 0, id = 0; k < d[2]; ++k)
+    for (int j = 0; j < d[1]; ++j)
+      for (int i = 0; i < d[0]; ++i, ++id)
+      {
+        pts[id] = Vec3(o[0] + i * h[0], o[1] + j * h[1], o[2] + k * h[2]);
+        val[id] = s->GetComponent(id, 0);
+      }
+  static const int five[5][4] = { { 0, 1, 2, 4 }, { 3, 1, 2, 7 }, { 5, 1, 4, 7 }, { 6, 2, 4, 7 }, { 1, 2, 4, 7 } };
+  std::vector<std::array<int, 4>> tets;
+  tets.reserve(5 * (d[0] - 1LL) * (d[1] - 1) * (d[2] - 1));
+  for (int k = 0; k + 1 < d[2]; ++k)
+    for (int j = 0; j + 1 < d[1]; ++j)
+      for (int i = 0; i + 1 < d[0]; ++i)
+      {
+        int c[8];
+        for (int b = 0; b < 8; ++b)
+        {
+          c[b] = ((k + ((b >> 2) & 1)) * d[1] + j + ((b >> 1) & 1)) * d[0] + i + (b & 1);
+        }
+        const int flip = (i + j + k) & 1; // mirror odd cells in x so shared face diagonals agree
+        for (const auto& t : five)
+        {
+          tets.push_back({ c[t[0] ^ flip], c[t[1] ^ flip], c[t[2] ^ flip], c[t[3] ^ flip] });
+        }
+      }
+  return TetMesh(std::move(pts), std::move(val), std::move(tets));
 }
 
 TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, std::string* note, const std::string& file)

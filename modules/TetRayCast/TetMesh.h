@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+class vtkImageData;
 class vtkUnstructuredGrid;
 
 namespace art
@@ -36,6 +37,10 @@ public:
 
   /// Any vtkUnstructuredGrid with point scalars (the active ones, or `array` by name). Cells
   /// other than tets are tetrahedralised first (vtkDataSetTriangleFilter); `note` says so.
+  /// Full-resolution tets of a voxel volume: every voxel cell split into 5 tets (alternating, so
+  /// the face diagonals match), point scalars = the voxel values (component 0).
+  static TetMesh FromImage(vtkImageData* image, const std::string& file = {});
+
   static TetMesh FromVTK(vtkUnstructuredGrid* grid, const std::string& array = {},
     std::string* note = nullptr, const std::string& file = {});
 
@@ -46,7 +51,11 @@ public:
   const std::vector<double>& Scalars() const { return Values; }
   const std::array<int, 4>& Tet(std::size_t t) const { return Tets[t]; }
   const std::array<int, 4>& Neighbours(std::size_t t) const { return Nbrs[t]; }
-  Plane FacePlane(std::size_t t, int f) const { return Planes[4 * t + f]; }
+  /// Outward plane of face f of tet t. Computed from the vertices when asked: the Pluecker walker
+  /// never needs planes, and storing four per tet would cost 128 bytes a tet (half a gigabyte for
+  /// a full-resolution CT head); the boundary faces' planes are kept.
+  Plane FacePlane(std::size_t t, int f) const;
+  const Plane& BoundaryPlane(std::size_t b) const { return BPlanes[b]; }
   /// f(x) = c[0] + c[1] x + c[2] y + c[3] z inside tet t.
   const std::array<double, 4>& Interpolant(std::size_t t) const { return Interp[t]; }
   const Vec3& VertexGradient(int v) const { return Gradients[v]; }
@@ -72,7 +81,7 @@ private:
   std::vector<Vec3> Points;
   std::vector<double> Values;
   std::vector<std::array<int, 4>> Tets, Nbrs;
-  std::vector<Plane> Planes;
+  std::vector<Plane> BPlanes;
   std::vector<std::array<double, 4>> Interp;
   std::vector<Vec3> Gradients;
   std::vector<std::array<int, 2>> Boundary;

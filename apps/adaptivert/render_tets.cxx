@@ -1,0 +1,307 @@
+// The tet caster behind `adaptivert render` for volumes and tet meshes. A volume becomes tets
+// (reduced with --tets / --max-error when the Reduction module is built, else full resolution),
+// is cast cell by cell, and is compared with the full-resolution voxel reference render.
+#include "Camera.h"
+#include "Command.h"
+#include "DataLoader.h"
+#include "Error.h"
+#include "ImageIO.h"
+#include "ImageMetrics.h"
+#include "Json.h"
+#include "ParallelTiles.h"
+#include "ProgressBar.h"
+#include "Render.h"
+#include "TetMesh.h"
+#include "TetRayCaster.h"
+#include "TransferFunction.h"
+#include "VoxelReferenceCaster.h"
+
+#ifdef ART_HAVE_Reduction
+#include "ReducerVTK.h"
+#include "TetReducer.h"
+#endif
+
+#include <vtkCamera.h>
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace
+{
+double Seconds(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void Declare(cli::Options& o)
+{
+  o.Add("tf", 0, "NAME|FILE",
+    "transfer function: a preset (ct-skin-bone, ct-bone, grey-ramp, constant) or a file of "
+    "'scalar r g b opacity' lines",
+    "ct-skin-bone");
+  o.Add("iso", 0, "V[,V..]", "iso-surfaces at these scalar values (shaded, combined with the volume)");
+  o.Add("iso-opacity", 0, "A", "opacity of every iso-surface", "1");
+  o.Add("ert", 0, "A", "early ray termination at this opacity (1 = off)", "0.99");
+  o.Add("integrator", 0, "RULE", "segment rule: exact or trapezoid (the paper's)", "exact");
+  o.Add("mip", 0, "", "maximum-intensity projection instead of emission-absorption");
+  o.Add("tets", 0, "N", "reduce a volume to about N adaptive tets first");
+  o.Add("max-error", 0, "E", "reduce a volume until the RMS error is at most E (data units)");
+  o.Add("reference", 0, "", "render the full-resolution voxel reference instead");
+  o.Add("no-error", 0, "", "skip the reference render and the error figures");
+}
+
+art::TransferFunction MakeTF(const cli::Options& o, double lo, double hi)
+{
+  const std::string tf = o.Get("tf");
+  if (std::filesystem::exists(tf) || tf.find('.') != std::string::npos || tf.find('/') != std::string::npos)
+  {
+    return art::TransferFunction::FromFile(tf);
+  }
+  return art::TransferFunction::Preset(tf, lo, hi);
+}
+
+art::RenderSettings MakeSettings(const cli::Options& o, art::TransferFunction tf)
+{
+  art::RenderSettings s;
+  s.tf = std::move(tf);
+  s.earlyTermination = o.GetDouble("ert");
+  if (!(s.earlyTermination > 0))
+  {
+    throw cli::UsageError("--ert expects an opacity in (0, 1]");
+  }
+  const std::string rule = o.Get("integrator");
+  if (rule == "trapezoid")
+  {
+    s.rule = art::RenderSettings::Rule::Trapezoid;
+  }
+  else if (rule != "exact")
+  {
+    throw cli::UsageError("--integrator expects exact or trapezoid, got '" + rule + "'");
+  }
+  if (o.Flag("mip"))
+  {
+    s.mode = art::RenderSettings::Mode::MaxIntensity;
+  }
+  if (o.Has("iso"))
+  {
+    std::stringstream ss(o.Get("iso"));
+    std::string item;
+    const double a = o.GetDouble("iso-opacity");
+    static const double colours[4][3] = { { 1, 0.85, 0.7 }, { 0.6, 0.8, 1 }, { 1, 0.5, 0.4 }, { 0.6, 1, 0.6 } };
+    while (std::getline(ss, item, ','))
+    {
+      char* end = nullptr;
+      const double v = std::strtod(item.c_str(), &end);
+      if (item.empty() || *end != '\0')
+      {
+        throw cli::UsageError("--iso expects numbers separated by commas, got '" + o.Get("iso") + "'");
+      }
+      const auto& c = colours[s.isos.size() % 4];
+      s.isos.push_back({ v, { { c[0], c[1], c[2] } }, a });
+    }
+  }
+  return s;
+}
+
+int Run(const cli::Options& o, const std::string& input)
+{
+  const cli::View view = cli::ViewFromOptions(o);
+  const bool json = o.Flag("json");
+  cli::ProgressBar bar(o.Flag("quiet"));
+  art::Progress progress(bar.Callback());
+  cli::Json j;
+  j.Set("input", input);
+
+  vtkSmartPointer<vtkImageData> volume;
+  art::TetMesh mesh;
+  std::string meshLabel, note;
+  double buildSeconds = 0, range[2] = { 0, 1 };
+  art::RenderSettings settings;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (art::KindOf(input) == art::DataKind::Volume)
+  {
+    volume = art::LoadVolume(input);
+    if (!volume->GetPointData()->GetScalars())
+    {
+      throw art::Error("volume has no scalars", input);
+    }
+    volume->GetPointData()->GetScalars()->GetRange(range);
+    settings = MakeSettings(o, MakeTF(o, range[0], range[1]));
+    if (!o.Flag("reference"))
+    {
+      if (o.Has("tets") || o.Has("max-error"))
+      {
+#ifdef ART_HAVE_Reduction
+        art::ReducerOptions ro;
+        if (o.Has("tets"))
+        {
+          ro.TargetTets = o.GetInt("tets");
+          if (ro.TargetTets < 6)
+          {
+            throw cli::UsageError("--tets expects a count of at least 6");
+          }
+        }
+        if (o.Has("max-error"))
+        {
+          ro.TargetError = o.GetDouble("max-error");
+        }
+        const art::VoxelVolume vv = art::VolumeFromImage(volume, input);
+        auto levels = art::TetReducer(ro).Run(vv, &progress);
+        if (levels.empty())
+        {
+          throw art::Error("the reducer produced no mesh", input);
+        }
+        const art::ReducedMesh& r = levels.back();
+        std::vector<art::Vec3> p(r.NumberOfVertices());
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+          p[i] = art::Vec3(&r.Points[3 * i]);
+        }
+        std::vector<std::array<int, 4>> t(r.NumberOfTets());
+        for (std::size_t i = 0; i < t.size(); ++i)
+        {
+          t[i] = { r.Tets[4 * i], r.Tets[4 * i + 1], r.Tets[4 * i + 2], r.Tets[4 * i + 3] };
+        }
+        mesh = art::TetMesh(std::move(p), r.Values, std::move(t));
+        std::ostringstream ss;
+        ss << "adaptive tets (least-squares reduction, RMS error " << r.Rms << ", max " << r.Max << ")";
+        meshLabel = ss.str();
+        j.Set("reducedRms", r.Rms).Set("reducedMax", r.Max);
+#else
+        throw art::Error("--tets and --max-error need the Reduction module, which is not in this build", input);
+#endif
+      }
+      else
+      {
+        mesh = art::TetMesh::FromImage(volume, input);
+        meshLabel = "full-resolution tets (5 per voxel cell)";
+      }
+    }
+  }
+  else
+  {
+    auto grid = art::LoadMesh(input);
+    mesh = art::TetMesh::FromVTK(grid, {}, &note, input);
+    meshLabel = "tet mesh";
+    range[0] = mesh.ScalarRange(0), range[1] = mesh.ScalarRange(1);
+    settings = MakeSettings(o, MakeTF(o, range[0], range[1]));
+  }
+  buildSeconds = Seconds(t0);
+
+  art::Box3 bounds;
+  if (volume)
+  {
+    double b[6];
+    volume->GetBounds(b);
+    bounds = art::Box3::FromBounds(b);
+  }
+  else
+  {
+    bounds = mesh.Bounds();
+  }
+  vtkNew<vtkCamera> vcam;
+  cli::SetupCamera(o, bounds, vcam);
+  const art::Camera cam = art::Camera::FromVTK(vcam, view.width, view.height);
+
+  art::Image img, ref;
+  art::RenderStats st, rst;
+  bool haveRef = false;
+  if (o.Flag("reference"))
+  {
+    if (!volume)
+    {
+      throw art::Error("--reference needs a voxel volume", input);
+    }
+    auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf);
+    rc.SetMaxIntensity(settings.mode == art::RenderSettings::Mode::MaxIntensity);
+    st = rc.Render(cam, img, &progress);
+  }
+  else
+  {
+    const art::TetRayCaster caster(mesh, settings);
+    st = caster.Render(cam, img, &progress);
+    if (!o.Flag("no-error") && settings.isos.empty())
+    {
+      if (volume)
+      {
+        auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf);
+        rc.SetMaxIntensity(settings.mode == art::RenderSettings::Mode::MaxIntensity);
+        rst = rc.Render(cam, ref, &progress);
+        haveRef = true;
+      }
+      else if (settings.rule == art::RenderSettings::Rule::Trapezoid || settings.earlyTermination < 1)
+      {
+        art::RenderSettings exact = settings; // a mesh's reference: the exact rule on that mesh
+        exact.rule = art::RenderSettings::Rule::Exact;
+        exact.earlyTermination = 2.0;
+        rst = art::TetRayCaster(mesh, exact).Render(cam, ref, &progress);
+        haveRef = true;
+      }
+    }
+  }
+  bar.Finish();
+  art::ImageMetricsResult m;
+  if (haveRef)
+  {
+    m = art::CompareImages(img, ref);
+  }
+  img.CompositeOver({ view.background[0], view.background[1], view.background[2] });
+  art::WriteImage(img, view.output);
+
+  const auto& c = st.counters;
+  const double mrays = c.rays / std::max(st.seconds, 1e-9) / 1e6;
+  const double nsPerTet = c.tetsCrossed ? st.seconds * 1e9 / double(c.tetsCrossed) * art::GetThreadCount() : 0;
+  if (json)
+  {
+    j.Set("output", view.output).Set("width", view.width).Set("height", view.height);
+    j.Set("mesh", o.Flag("reference") ? std::string("voxel reference") : meshLabel);
+    j.Set("tets", static_cast<long long>(mesh.NumberOfTets()))
+      .Set("vertices", static_cast<long long>(mesh.NumberOfPoints()));
+    j.Set("buildSeconds", buildSeconds).Set("renderSeconds", st.seconds).Set("mraysPerSecond", mrays);
+    j.Set("tetsCrossed", static_cast<long long>(c.tetsCrossed)).Set("tetsPerRay", c.PerRay(c.tetsCrossed));
+    j.Set("nsPerTetCrossed", nsPerTet).Set("entrySearches", static_cast<long long>(c.entrySearches));
+    if (haveRef)
+    {
+      j.Set("referenceSeconds", rst.seconds).Set("psnr", m.psnr).Set("ssim", m.ssim).Set("rmse", m.rmse);
+    }
+    std::printf("%s\n", j.Str().c_str());
+    return cli::ExitOk;
+  }
+  std::printf("input        %s\n", input.c_str());
+  if (!note.empty())
+  {
+    std::printf("note         %s\n", note.c_str());
+  }
+  if (o.Flag("reference"))
+  {
+    std::printf("render       voxel reference (trilinear, 2 samples/voxel, exact steps, no ERT), %d x %d: %.3f s\n",
+      view.width, view.height, st.seconds);
+  }
+  else
+  {
+    std::printf("mesh         %s: %zu tets, %zu vertices (%.2f s)\n", meshLabel.c_str(), mesh.NumberOfTets(),
+      mesh.NumberOfPoints(), buildSeconds);
+    std::printf("render       %d x %d, %s rule, ERT %g: %.3f s (%.2f Mrays/s), %.1f tets/ray, %.0f ns/tet "
+                "crossed per thread\n",
+      view.width, view.height, settings.rule == art::RenderSettings::Rule::Exact ? "exact" : "trapezoid",
+      settings.earlyTermination, st.seconds, mrays, c.PerRay(c.tetsCrossed), nsPerTet);
+  }
+  if (haveRef)
+  {
+    std::printf("reference    %s: %.3f s\n", volume ? "voxel ray caster" : "exact rule on the mesh", rst.seconds);
+    std::printf("error        PSNR %.2f dB, SSIM %.4f, RMSE %.5f (RGBA, against the reference)\n", m.psnr, m.ssim,
+      m.rmse);
+  }
+  std::printf("output       %s\n", view.output.c_str());
+  return cli::ExitOk;
+}
+
+cli::RendererRegistrar reg({ "tets", { art::DataKind::Volume, art::DataKind::Mesh }, Declare, Run });
+} // namespace

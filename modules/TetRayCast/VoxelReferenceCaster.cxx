@@ -1,0 +1,126 @@
+#include "VoxelReferenceCaster.h"
+
+#include "Error.h"
+#include "ExactIntegrator.h"
+#include "ParallelTiles.h"
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace art
+{
+VoxelReferenceCaster::VoxelReferenceCaster(std::vector<double> values, const int dims[3], const Vec3& origin,
+  const Vec3& spacing, TransferFunction tf)
+  : V(std::move(values)), D{ dims[0], dims[1], dims[2] }, O(origin), H(spacing), TF(std::move(tf))
+{
+  if (D[0] < 2 || D[1] < 2 || D[2] < 2 || V.size() != static_cast<std::size_t>(D[0]) * D[1] * D[2])
+  {
+    throw Error("reference caster needs at least 2 x 2 x 2 voxels");
+  }
+  Box = Box3(O, O + Vec3((D[0] - 1) * H.x, (D[1] - 1) * H.y, (D[2] - 1) * H.z));
+}
+
+VoxelReferenceCaster VoxelReferenceCaster::FromVTK(vtkImageData* image, TransferFunction tf)
+{
+  vtkDataArray* s = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!s)
+  {
+    throw Error("volume has no point scalars");
+  }
+  int d[3];
+  double o[3], h[3];
+  image->GetDimensions(d);
+  image->GetOrigin(o);
+  image->GetSpacing(h);
+  std::vector<double> v(s->GetNumberOfTuples());
+  for (std::size_t i = 0; i < v.size(); ++i)
+  {
+    v[i] = s->GetComponent(static_cast<vtkIdType>(i), 0);
+  }
+  return VoxelReferenceCaster(std::move(v), d, Vec3(o), Vec3(h), std::move(tf));
+}
+
+double VoxelReferenceCaster::Sample(const Vec3& p) const
+{
+  double f[3];
+  int i[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const double u = std::min(std::max((p[a] - O[a]) / H[a], 0.0), double(D[a] - 1));
+    i[a] = std::min(static_cast<int>(u), D[a] - 2);
+    f[a] = u - i[a];
+  }
+  const std::size_t sx = 1, sy = D[0], sz = static_cast<std::size_t>(D[0]) * D[1];
+  const double* v = V.data() + i[0] + i[1] * sy + i[2] * sz;
+  const double c00 = v[0] + f[0] * (v[sx] - v[0]);
+  const double c10 = v[sy] + f[0] * (v[sy + sx] - v[sy]);
+  const double c01 = v[sz] + f[0] * (v[sz + sx] - v[sz]);
+  const double c11 = v[sz + sy] + f[0] * (v[sz + sy + sx] - v[sz + sy]);
+  const double c0 = c00 + f[1] * (c10 - c00), c1 = c01 + f[1] * (c11 - c01);
+  return c0 + f[2] * (c1 - c0);
+}
+
+RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress* progress) const
+{
+  const auto start = std::chrono::steady_clock::now();
+  img = Image(cam.Width(), cam.Height());
+  const double step = std::min(H.x, std::min(H.y, H.z)) / PerVoxel;
+  const ExactIntegrator rule(TF);
+  RenderStats st;
+  st.counters = ForEachTile(cam.Width(), cam.Height(), 16,
+    [&](const Tile& tile, Counters& c) {
+      for (int y = tile.y0; y < tile.y1; ++y)
+      {
+        for (int x = tile.x0; x < tile.x1; ++x)
+        {
+          ++c.rays;
+          const Ray r = cam.Generate(x, y);
+          double t0, t1;
+          if (!Box.Clip(r, t0, t1) || !(t1 > t0))
+          {
+            continue;
+          }
+          ++c.hits;
+          const double len = Length(r.dir);
+          const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) * len / step)));
+          const double dt = (t1 - t0) / n;
+          RayAccum acc;
+          double sa = Sample(r.At(t0)), smax = sa;
+          for (int k = 1; k <= n; ++k)
+          {
+            const double sb = Sample(r.At(k == n ? t1 : t0 + k * dt));
+            if (Mip)
+            {
+              smax = std::max(smax, sb);
+            }
+            else
+            {
+              rule.Integrate(sa, sb, dt * len, acc);
+            }
+            sa = sb;
+          }
+          c.voxelsVisited += n;
+          if (Mip)
+          {
+            double rgb[3], tau;
+            TF.Evaluate(smax, rgb, tau);
+            const double a = TF.Alpha(smax);
+            img.Set(x, y, { float(rgb[0] * a), float(rgb[1] * a), float(rgb[2] * a), float(a) });
+          }
+          else
+          {
+            img.Set(x, y, { float(acc.rgb[0]), float(acc.rgb[1]), float(acc.rgb[2]), float(acc.Alpha()) });
+          }
+        }
+      }
+    },
+    progress);
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return st;
+}
+} // namespace art
