@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -61,6 +62,21 @@ AtomicFile::~AtomicFile()
   {
     std::remove(Temp.c_str());
   }
+}
+
+void WriteFileAtomic(const std::string& path, const std::string& content)
+{
+  AtomicFile file(path);
+  {
+    std::ofstream out(file.TempPath(), std::ios::binary);
+    out << content;
+    out.flush();
+    if (!out)
+    {
+      throw Error("cannot write file", path);
+    }
+  }
+  file.Commit();
 }
 
 void AtomicFile::Commit()

@@ -31,6 +31,9 @@ private:
   bool Done = false;
 };
 
+/// Writes `content` to `path` atomically (temporary file, then rename). Throws art::Error.
+ADAPTIVERTIO_EXPORT void WriteFileAtomic(const std::string& path, const std::string& content);
+
 /// Extension of a path in lower case with its dot (".nii.gz" for double extensions), or "".
 ADAPTIVERTIO_EXPORT std::string LowerExtension(const std::string& path);
 } // namespace art

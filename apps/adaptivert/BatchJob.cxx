@@ -1,0 +1,182 @@
+#include "BatchJob.h"
+#include "Error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace cli
+{
+namespace
+{
+struct Cam
+{
+  double azimuth = 0, elevation = 0, zoom = 1;
+};
+
+std::string Scalar(const json& v)
+{
+  if (v.is_string())
+  {
+    return v.get<std::string>();
+  }
+  return v.dump(); // numbers print as in JSON
+}
+
+// {"tets": 20000, "exact": true} -> --tets 20000 --exact; false drops the flag.
+std::vector<std::string> OptionsToArgs(const json& s, std::string& text, const std::string& file)
+{
+  if (!s.is_object())
+  {
+    throw art::Error("a setting must be an object of render options, got " + s.dump(), file);
+  }
+  std::vector<std::string> args;
+  for (const auto& [key, value] : s.items())
+  {
+    if (value.is_boolean())
+    {
+      if (value.get<bool>())
+      {
+        args.push_back("--" + key);
+        text += (text.empty() ? "" : " ") + key;
+      }
+      continue;
+    }
+    if (value.is_object() || value.is_array() || value.is_null())
+    {
+      throw art::Error("setting '" + key + "' must be a number, string or boolean", file);
+    }
+    args.push_back("--" + key);
+    args.push_back(Scalar(value));
+    text += (text.empty() ? "" : " ") + key + "=" + Scalar(value);
+  }
+  return args;
+}
+
+std::vector<Cam> Cameras(const json& j, const std::string& file)
+{
+  std::vector<Cam> cams;
+  if (j.is_null())
+  {
+    cams.push_back({});
+  }
+  else if (j.is_object())
+  {
+    const int n = j.value("orbit", 1);
+    if (n < 1 || n > 100000)
+    {
+      throw art::Error("cameras.orbit must be 1..100000", file);
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      cams.push_back({ 360.0 * i / n, j.value("elevation", 0.0), j.value("zoom", 1.0) });
+    }
+  }
+  else if (j.is_array())
+  {
+    for (const auto& c : j)
+    {
+      cams.push_back({ c.value("azimuth", 0.0), c.value("elevation", 0.0), c.value("zoom", 1.0) });
+    }
+  }
+  else
+  {
+    throw art::Error("cameras must be {\"orbit\": N, ...} or a list of cameras", file);
+  }
+  return cams;
+}
+
+std::string Num(const char* fmt, int v)
+{
+  char b[32];
+  std::snprintf(b, sizeof b, fmt, v);
+  return b;
+}
+} // namespace
+
+BatchJob LoadBatchJob(const std::string& path)
+{
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+  {
+    throw art::Error(fs::exists(path, ec) ? "is not a file" : "no such file", path);
+  }
+  json j;
+  try
+  {
+    std::ifstream in(path);
+    j = json::parse(in);
+  }
+  catch (const json::exception& e)
+  {
+    throw art::Error(std::string("not valid JSON: ") + e.what(), path);
+  }
+  try
+  {
+    const fs::path base = fs::absolute(path).parent_path();
+    BatchJob job;
+    job.file = path;
+    job.outputDir = (base / j.value("output", std::string("frames"))).lexically_normal().string();
+    if (!j.contains("datasets") || !j["datasets"].is_array() || j["datasets"].empty())
+    {
+      throw art::Error("needs \"datasets\": a non-empty list of files", path);
+    }
+    const std::string size = j.value("size", std::string("400x400"));
+    const std::vector<Cam> cams = Cameras(j.contains("cameras") ? j["cameras"] : json(), path);
+    const json settings = j.contains("settings") ? j["settings"] : json::array({ json::object() });
+    if (!settings.is_array() || settings.empty())
+    {
+      throw art::Error("\"settings\" must be a non-empty list", path);
+    }
+    const bool withReference = j.contains("reference");
+    std::vector<BatchTask> refs, frames;
+    for (const auto& d : j["datasets"])
+    {
+      const std::string ds = (base / d.get<std::string>()).lexically_normal().string();
+      const std::string stem = fs::path(ds).stem().string();
+      for (size_t c = 0; c < cams.size(); ++c)
+      {
+        const std::vector<std::string> view = { "--size", size, "--azimuth",
+          std::to_string(cams[c].azimuth), "--elevation", std::to_string(cams[c].elevation),
+          "--zoom", std::to_string(cams[c].zoom) };
+        const std::string camName = stem + "_c" + Num("%03d", static_cast<int>(c));
+        std::string refName;
+        if (withReference)
+        {
+          BatchTask r;
+          r.name = refName = camName + "_reference";
+          r.dataset = ds;
+          r.args = OptionsToArgs(j["reference"], r.setting, path);
+          r.args.insert(r.args.begin(), view.begin(), view.end());
+          r.isReference = true;
+          r.camera = static_cast<int>(c);
+          refs.push_back(std::move(r));
+        }
+        for (size_t s = 0; s < settings.size(); ++s)
+        {
+          BatchTask t;
+          t.name = camName + "_s" + Num("%02d", static_cast<int>(s));
+          t.dataset = ds;
+          t.args = OptionsToArgs(settings[s], t.setting, path);
+          t.args.insert(t.args.begin(), view.begin(), view.end());
+          t.reference = refName;
+          t.camera = static_cast<int>(c);
+          frames.push_back(std::move(t));
+        }
+      }
+    }
+    job.tasks = std::move(refs);
+    job.tasks.insert(job.tasks.end(), frames.begin(), frames.end());
+    return job;
+  }
+  catch (const json::exception& e)
+  {
+    throw art::Error(std::string("bad job: ") + e.what(), path);
+  }
+}
+} // namespace cli
