@@ -1,0 +1,195 @@
+#include "vtkTetRayCastMapper.h"
+
+#include "Camera.h"
+#include "Error.h"
+#include "TetMesh.h"
+#include "TetRayCaster.h"
+
+#include <vtkAutoInit.h>
+#include <vtkCamera.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkMatrix4x4.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkRayCastImageDisplayHelper.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkVolume.h>
+#include <vtkVolumeProperty.h>
+
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+// The textured-quad helper is an OpenGL2 override of vtkRayCastImageDisplayHelper.
+VTK_MODULE_INIT(vtkRenderingOpenGL2);
+VTK_MODULE_INIT(vtkRenderingVolumeOpenGL2);
+
+vtkStandardNewMacro(vtkTetRayCastMapper);
+
+struct vtkTetRayCastMapper::Internals
+{
+  std::unique_ptr<art::TetMesh> Mesh;
+  vtkMTimeType MeshTime = 0;
+  vtkDataSet* MeshInput = nullptr;
+  std::vector<art::IsoSurface> Isos;
+  vtkSmartPointer<vtkImageData> Last = vtkSmartPointer<vtkImageData>::New();
+  std::vector<unsigned char> Bytes;
+  vtkSmartPointer<vtkRayCastImageDisplayHelper> Helper;
+};
+
+vtkTetRayCastMapper::vtkTetRayCastMapper()
+  : Impl(new Internals)
+{
+  this->Impl->Helper.TakeReference(vtkRayCastImageDisplayHelper::New());
+}
+
+vtkTetRayCastMapper::~vtkTetRayCastMapper()
+{
+  delete this->Impl;
+}
+
+void vtkTetRayCastMapper::AddIsoSurface(double value, double r, double g, double b, double opacity)
+{
+  this->Impl->Isos.push_back({ value, { { r, g, b } }, std::min(std::max(opacity, 0.0), 1.0) });
+  this->Modified();
+}
+
+void vtkTetRayCastMapper::RemoveAllIsoSurfaces()
+{
+  this->Impl->Isos.clear();
+  this->Modified();
+}
+
+int vtkTetRayCastMapper::GetNumberOfIsoSurfaces()
+{
+  return static_cast<int>(this->Impl->Isos.size());
+}
+
+vtkImageData* vtkTetRayCastMapper::GetLastImage()
+{
+  return this->Impl->Last;
+}
+
+void vtkTetRayCastMapper::ReleaseGraphicsResources(vtkWindow* w)
+{
+  if (this->Impl->Helper)
+  {
+    this->Impl->Helper->ReleaseGraphicsResources(w);
+  }
+}
+
+void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  vtkDataSet* input = this->GetDataSetInput();
+  if (!input || !ren || !vol)
+  {
+    return;
+  }
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(input);
+  if (!grid)
+  {
+    vtkErrorMacro("input must be a vtkUnstructuredGrid");
+    return;
+  }
+  // (Re)build the engine's arrays only when the data changed.
+  if (!this->Impl->Mesh || this->Impl->MeshInput != input || this->Impl->MeshTime < input->GetMTime())
+  {
+    try
+    {
+      std::string note;
+      this->Impl->Mesh = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(grid, {}, &note));
+      if (!note.empty())
+      {
+        vtkWarningMacro(<< note);
+      }
+    }
+    catch (const art::Error& e)
+    {
+      this->Impl->Mesh.reset();
+      vtkErrorMacro(<< e.what());
+      return;
+    }
+    this->Impl->MeshInput = input;
+    this->Impl->MeshTime = input->GetMTime();
+  }
+  art::RenderSettings s;
+  try
+  {
+    s.tf = art::TransferFunction::FromVTK(vol->GetProperty());
+  }
+  catch (const art::Error& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return;
+  }
+  s.earlyTermination = this->EarlyRayTermination >= 1.0 ? 2.0 : this->EarlyRayTermination;
+  s.rule = this->TrapezoidRule ? art::RenderSettings::Rule::Trapezoid : art::RenderSettings::Rule::Exact;
+  s.mode = this->BlendMode == MAXIMUM_INTENSITY_BLEND ? art::RenderSettings::Mode::MaxIntensity
+                                                      : art::RenderSettings::Mode::Composite;
+  s.isos = this->Impl->Isos;
+
+  int* size = ren->GetSize();
+  const int vw = std::max(1, size[0]), vh = std::max(1, size[1]);
+  const int w = std::max(1, static_cast<int>(vw / this->ImageSampleDistance + 0.5));
+  const int h = std::max(1, static_cast<int>(vh / this->ImageSampleDistance + 0.5));
+  const art::Camera cam = art::Camera::FromVTK(ren->GetActiveCamera(), w, h);
+  art::Image img;
+  const art::RenderStats st = art::TetRayCaster(*this->Impl->Mesh, s).Render(cam, img);
+  this->LastRenderTime = st.seconds;
+  this->LastTetsCrossed = static_cast<double>(st.counters.tetsCrossed);
+
+  // Keep the float image (bottom row first, as VTK images are) and draw 8-bit premultiplied RGBA.
+  vtkImageData* last = this->Impl->Last;
+  last->SetDimensions(w, h, 1);
+  last->AllocateScalars(VTK_FLOAT, 4);
+  float* dst = static_cast<float*>(last->GetScalarPointer());
+  auto& bytes = this->Impl->Bytes;
+  bytes.resize(static_cast<std::size_t>(4) * w * h);
+  for (int y = 0; y < h; ++y)
+  {
+    const float* row = img.Pixel(0, h - 1 - y);
+    std::copy(row, row + 4 * w, dst + static_cast<std::size_t>(4) * w * y);
+    for (int i = 0; i < 4 * w; ++i)
+    {
+      bytes[static_cast<std::size_t>(4) * w * y + i] =
+        static_cast<unsigned char>(std::min(std::max(row[i], 0.f), 1.f) * 255.f + 0.5f);
+    }
+  }
+  last->Modified();
+
+  // Depth of the quad: the nearest corner of the data's box, as VTK's ray cast mappers place it.
+  double b[6];
+  input->GetBounds(b);
+  double aspect[2];
+  ren->ComputeAspect();
+  ren->GetAspect(aspect);
+  vtkMatrix4x4* m = ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect[0] / aspect[1], 0, 1);
+  double minZ = 1.0;
+  for (int k = 0; k < 8; ++k)
+  {
+    double p[4] = { b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)], 1.0 }, q[4];
+    m->MultiplyPoint(p, q);
+    if (q[3] != 0)
+    {
+      minZ = std::min(minZ, q[2] / q[3]);
+    }
+  }
+  minZ = std::min(std::max(minZ, 0.0), 1.0);
+  int mem[2] = { w, h }, view[2] = { vw, vh }, use[2] = { w, h }, origin[2] = { 0, 0 };
+  this->Impl->Helper->SetPreMultipliedColors(1);
+  this->Impl->Helper->RenderTexture(vol, ren, mem, view, use, origin, static_cast<float>(minZ), bytes.data());
+}
+
+void vtkTetRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
+  os << indent << "EarlyRayTermination: " << this->EarlyRayTermination << "\n";
+  os << indent << "TrapezoidRule: " << this->TrapezoidRule << "\n";
+  os << indent << "IsoSurfaces: " << this->Impl->Isos.size() << "\n";
+  os << indent << "LastRenderTime: " << this->LastRenderTime << "\n";
+}
