@@ -23,6 +23,12 @@ struct Command
 std::vector<Command>& Registry();
 const Command* FindCommand(const std::string& name);
 
+/// The options every command takes: --help --threads --json --quiet --verbose.
+void AddCommonOptions(Options& o);
+/// Declares `cmd`'s options, parses `args` (after the command name), applies --threads and
+/// --verbose, and runs it. Used by main() and by commands that run another command (demo).
+int RunCommand(const Command& cmd, const std::vector<std::string>& args);
+
 struct Registrar
 {
   explicit Registrar(Command c) { Registry().push_back(std::move(c)); }

@@ -2,15 +2,12 @@
 // Errors: one line "adaptivert: <file>: <what>" on stderr; exit 1 at run time, 2 for usage.
 #include "Command.h"
 #include "Error.h"
-#include "ParallelTiles.h"
-
-#include <vtkLogger.h>
-#include <vtkOutputWindow.h>
 
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -27,14 +24,6 @@ void PrintOverview()
               "Exit codes: 0 success, 1 run-time failure (bad file, failed check), 2 usage error.\n");
 }
 
-void AddCommonOptions(cli::Options& o)
-{
-  o.Add("help", 'h', "", "show this help and exit");
-  o.Add("threads", 0, "N", "worker threads, 0 = all cores", "0");
-  o.Add("json", 0, "", "print one JSON object on stdout instead of text");
-  o.Add("quiet", 'q', "", "no progress on stderr");
-  o.Add("verbose", 'v', "", "show VTK's own warnings and errors too");
-}
 } // namespace
 
 int main(int argc, char** argv)
@@ -56,33 +45,9 @@ int main(int argc, char** argv)
     std::fprintf(stderr, "adaptivert: unknown command '%s' (try 'adaptivert --help')\n", argv[1]);
     return cli::ExitUsage;
   }
-  cli::Options opts;
-  if (cmd->declare)
-  {
-    cmd->declare(opts);
-  }
-  AddCommonOptions(opts);
   try
   {
-    opts.Parse(argc, argv, 2);
-    if (opts.Flag("help"))
-    {
-      std::printf("usage: %s\n\n%s\n\noptions:\n%s", cmd->usage.c_str(), cmd->summary.c_str(),
-        opts.Help().c_str());
-      if (!cmd->examples.empty())
-      {
-        std::printf("\nexamples:\n%s", cmd->examples.c_str());
-      }
-      return cli::ExitOk;
-    }
-    // VTK's readers report through its output window; we report errors ourselves, in one line.
-    if (!opts.Flag("verbose"))
-    {
-      vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
-      vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-    }
-    art::SetThreadCount(static_cast<int>(opts.GetInt("threads")));
-    return cmd->run(opts);
+    return cli::RunCommand(*cmd, std::vector<std::string>(argv + 2, argv + argc));
   }
   catch (const cli::UsageError& e)
   {
