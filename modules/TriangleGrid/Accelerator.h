@@ -5,6 +5,7 @@
 #define art_Accelerator_h
 
 #include "AdaptiveRTTriangleGridModule.h"
+#include "Box3.h"
 #include "Counters.h"
 #include "Ray.h"
 #include "TriangleStore.h"
@@ -59,6 +60,11 @@ public:
   virtual size_t MemoryBytes() const = 0;
   /// "uniform grid 64x60x48", "R[16,4]", "O[4,15]" ...
   virtual std::string Name() const = 0;
+
+  /// Input-order ids of every triangle in the voxels the ray passes within [tmin, tmax], sorted, unique.
+  virtual void Candidates(const Ray& r, std::vector<long long>& ids, Counters& c) const = 0;
+  /// Boxes of the non-empty voxels down to `level` (a voxel deeper is shown as its ancestor).
+  virtual void VoxelBoxes(int level, std::vector<Box3>& boxes) const { boxes.assign(1, S->Bounds()); }
 
   /// Closest hits of many rays in parallel (art::ForEachRange); hits[i] belongs to rays[i].
   Counters ClosestBatch(const std::vector<Ray>& rays, std::vector<Hit>& hits) const;

@@ -10,6 +10,7 @@
 #include "Box3.h"
 #include "WatertightTest.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace art
@@ -159,6 +160,26 @@ public:
     static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
     SortAndMergeHits(*S, hits, 1e-7 * S->Bounds().Diagonal() * p.invLen);
     c.hits += hits.empty() ? 0 : 1;
+  }
+
+  void Candidates(const Ray& r, std::vector<long long>& out, Counters& c) const override
+  {
+    out.clear();
+    if (!r.IsValid() || !(r.tmin <= r.tmax))
+    {
+      return;
+    }
+    const RayPrep p(r);
+    auto visit = [&](const std::uint32_t* ids, std::uint32_t n, double) {
+      for (std::uint32_t k = 0; k < n; ++k)
+      {
+        out.push_back(S->OriginalIndex(ids[k]));
+      }
+      return false;
+    };
+    static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
   }
 };
 } // namespace art

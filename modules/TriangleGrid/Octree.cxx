@@ -113,6 +113,36 @@ void Octree::BuildNode(std::uint32_t n, const double lo[3], const double hi[3], 
   }
 }
 
+void Octree::VoxelBoxes(int level, std::vector<Box3>& boxes) const
+{
+  boxes.clear();
+  CollectBoxes(0, Root.lo, Root.hi, 0, level, boxes);
+}
+
+void Octree::CollectBoxes(std::uint32_t n, const Vec3& lo, const Vec3& hi, int depth, int level, std::vector<Box3>& boxes) const
+{
+  const ONode& node = Nodes[n];
+  if (node.count == Internal && depth < level)
+  {
+    const Vec3 mid = (lo + hi) * 0.5;
+    for (int k = 0; k < 8; ++k)
+    {
+      Vec3 clo, chi;
+      for (int a = 0; a < 3; ++a)
+      {
+        const bool high = k & (1 << a);
+        clo[a] = high ? mid[a] : lo[a];
+        chi[a] = high ? hi[a] : mid[a];
+      }
+      CollectBoxes(node.first + k, clo, chi, depth + 1, level, boxes);
+    }
+  }
+  else if (node.count != 0)
+  {
+    boxes.emplace_back(lo, hi);
+  }
+}
+
 std::string Octree::Name() const
 {
   char buf[96];

@@ -19,6 +19,7 @@ public:
 
   size_t MemoryBytes() const override { return Nodes.size() * sizeof(ONode) + Ids.size() * sizeof(std::uint32_t); }
   std::string Name() const override;
+  void VoxelBoxes(int level, std::vector<Box3>& boxes) const override;
   int Depth() const { return DepthBuilt; }
   size_t NodeCount() const { return Nodes.size(); }
 
@@ -106,6 +107,7 @@ private:
   void BuildNode(std::uint32_t n, const double lo[3], const double hi[3], std::vector<std::uint32_t>& ids, int depth,
     int stuck);
   double Cost(const std::vector<std::uint32_t>& ids) const;
+  void CollectBoxes(std::uint32_t n, const Vec3& lo, const Vec3& hi, int depth, int level, std::vector<Box3>& boxes) const;
 
   std::vector<ONode> Nodes;
   std::vector<std::uint32_t> Ids;

@@ -254,6 +254,39 @@ size_t RecursiveGrid::MemoryBytes() const
   return Nodes.size() * sizeof(Node) + Cells.size() * sizeof(Cell) + Ids.size() * sizeof(std::uint32_t);
 }
 
+void RecursiveGrid::VoxelBoxes(int level, std::vector<Box3>& boxes) const
+{
+  boxes.clear();
+  if (!Nodes.empty())
+  {
+    CollectBoxes(0, level, boxes);
+  }
+}
+
+void RecursiveGrid::CollectBoxes(std::uint32_t node, int level, std::vector<Box3>& boxes) const
+{
+  const Node& G = Nodes[node];
+  for (int z = 0; z < G.n[2]; ++z)
+  {
+    for (int y = 0; y < G.n[1]; ++y)
+    {
+      for (int x = 0; x < G.n[0]; ++x)
+      {
+        const Cell& c = Cells[G.firstCell + (size_t(z) * G.n[1] + y) * G.n[0] + x];
+        if (c.count == Child && G.depth < level)
+        {
+          CollectBoxes(c.begin, level, boxes);
+        }
+        else if (c.count != 0)
+        {
+          const Vec3 lo(G.lo[0] + x * G.cs[0], G.lo[1] + y * G.cs[1], G.lo[2] + z * G.cs[2]);
+          boxes.emplace_back(lo, lo + Vec3(G.cs[0], G.cs[1], G.cs[2]));
+        }
+      }
+    }
+  }
+}
+
 std::string RecursiveGrid::Name() const
 {
   char buf[128];

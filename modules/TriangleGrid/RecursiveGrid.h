@@ -21,6 +21,7 @@ public:
 
   size_t MemoryBytes() const override;
   std::string Name() const override;
+  void VoxelBoxes(int level, std::vector<Box3>& boxes) const override;
 
   int Threshold() const { return Thr; }
   int Subdivisions() const { return Sub; }
@@ -158,6 +159,7 @@ protected:
 
 private:
   void BuildNode(std::uint32_t node, const std::vector<std::uint32_t>& ids, int stuck);
+  void CollectBoxes(std::uint32_t node, int level, std::vector<Box3>& boxes) const;
   int MaxDepth = 0;
   size_t IdBudget = 0;
 };

@@ -1,0 +1,227 @@
+#include "vtkTriangleGridLocator.h"
+
+#include "Accelerator.h"
+#include "Error.h"
+
+#include <vtkCellArray.h>
+#include <vtkGenericCell.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkTriangleGridLocator);
+
+vtkTriangleGridLocator::vtkTriangleGridLocator() = default;
+vtkTriangleGridLocator::~vtkTriangleGridLocator() = default;
+
+void vtkTriangleGridLocator::FreeSearchStructure()
+{
+  this->Engine.reset();
+}
+
+void vtkTriangleGridLocator::BuildLocator()
+{
+  if (this->Engine && this->BuildTime > this->MTime && this->DataSet &&
+    this->BuildTime > this->DataSet->GetMTime())
+  {
+    return;
+  }
+  this->BuildLocatorInternal();
+}
+
+void vtkTriangleGridLocator::ForceBuildLocator()
+{
+  this->BuildLocatorInternal();
+}
+
+void vtkTriangleGridLocator::BuildLocatorInternal()
+{
+  this->FreeSearchStructure();
+  auto* pd = vtkPolyData::SafeDownCast(this->DataSet);
+  if (!pd)
+  {
+    vtkErrorMacro(<< "needs a vtkPolyData input, got " << (this->DataSet ? this->DataSet->GetClassName() : "none"));
+    return;
+  }
+  try
+  {
+    auto store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd));
+    art::AcceleratorOptions o;
+    o.kind = static_cast<art::AcceleratorKind>(this->AcceleratorType);
+    o.voxelThreshold = this->VoxelThreshold;
+    o.subdivisions = this->Subdivisions;
+    o.planeWeight = this->PlaneWeight;
+    o.topLevelGrid = this->TopLevelGrid != 0;
+    this->Engine = art::MakeAccelerator(store, o);
+    this->BuildTime.Modified();
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+  }
+}
+
+int vtkTriangleGridLocator::IntersectWithLine(const double p1[3], const double p2[3], double, double& t,
+  double x[3], double pcoords[3], int& subId, vtkIdType& cellId, vtkGenericCell* cell)
+{
+  this->BuildLocator();
+  cellId = -1;
+  subId = 0;
+  if (!this->Engine)
+  {
+    return 0;
+  }
+  art::Ray r;
+  r.org = art::Vec3(p1);
+  r.dir = art::Vec3(p2) - r.org;
+  r.tmin = 0;
+  r.tmax = 1;
+  art::Hit h;
+  art::Counters c;
+  if (!this->Engine->Closest(r, h, c))
+  {
+    return 0;
+  }
+  t = h.t;
+  const art::Vec3 p = r.At(h.t);
+  x[0] = p.x;
+  x[1] = p.y;
+  x[2] = p.z;
+  pcoords[0] = h.u;
+  pcoords[1] = h.v;
+  pcoords[2] = 0;
+  cellId = h.triangle;
+  if (cell)
+  {
+    this->DataSet->GetCell(cellId, cell);
+  }
+  return 1;
+}
+
+int vtkTriangleGridLocator::IntersectWithLine(
+  const double p1[3], const double p2[3], vtkPoints* points, vtkIdList* cellIds)
+{
+  this->BuildLocator();
+  if (points)
+  {
+    points->Reset();
+  }
+  if (cellIds)
+  {
+    cellIds->Reset();
+  }
+  if (!this->Engine)
+  {
+    return 0;
+  }
+  art::Ray r;
+  r.org = art::Vec3(p1);
+  r.dir = art::Vec3(p2) - r.org;
+  r.tmin = 0;
+  r.tmax = 1;
+  std::vector<art::Hit> hits;
+  art::Counters c;
+  this->Engine->All(r, hits, c);
+  for (const art::Hit& h : hits)
+  {
+    if (points)
+    {
+      const art::Vec3 p = r.At(h.t);
+      points->InsertNextPoint(p.x, p.y, p.z);
+    }
+    if (cellIds)
+    {
+      cellIds->InsertNextId(h.triangle);
+    }
+  }
+  if (hits.empty())
+  {
+    return 0;
+  }
+  // Inside a closed surface when the ray from p1 onwards crosses it an odd number of times.
+  r.tmax = std::numeric_limits<double>::infinity();
+  std::vector<art::Hit> beyond;
+  this->Engine->All(r, beyond, c);
+  return beyond.size() % 2 == 1 ? -1 : 1;
+}
+
+void vtkTriangleGridLocator::FindCellsAlongLine(const double p1[3], const double p2[3], double, vtkIdList* cells)
+{
+  this->BuildLocator();
+  cells->Reset();
+  if (!this->Engine)
+  {
+    return;
+  }
+  art::Ray r;
+  r.org = art::Vec3(p1);
+  r.dir = art::Vec3(p2) - r.org;
+  r.tmin = 0;
+  r.tmax = 1;
+  std::vector<long long> ids;
+  art::Counters c;
+  this->Engine->Candidates(r, ids, c);
+  for (long long id : ids)
+  {
+    cells->InsertNextId(id);
+  }
+}
+
+void vtkTriangleGridLocator::GenerateRepresentation(int level, vtkPolyData* pd)
+{
+  this->BuildLocator();
+  if (!pd || !this->Engine)
+  {
+    return;
+  }
+  std::vector<art::Box3> boxes;
+  this->Engine->VoxelBoxes(level < 0 ? 1000 : level, boxes);
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> quads;
+  static const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 5, 7, 3 }, { 0, 4, 5, 1 }, { 2, 3, 7, 6 }, { 0, 1, 3, 2 },
+    { 4, 6, 7, 5 } };
+  for (const art::Box3& b : boxes)
+  {
+    const vtkIdType base = pts->GetNumberOfPoints();
+    for (int k = 0; k < 8; ++k)
+    {
+      pts->InsertNextPoint(k & 1 ? b.hi.x : b.lo.x, k & 2 ? b.hi.y : b.lo.y, k & 4 ? b.hi.z : b.lo.z);
+    }
+    for (const auto& f : faces)
+    {
+      const vtkIdType q[4] = { base + f[0], base + f[1], base + f[2], base + f[3] };
+      quads->InsertNextCell(4, q);
+    }
+  }
+  pd->Initialize();
+  pd->SetPoints(pts);
+  pd->SetPolys(quads);
+}
+
+vtkIdType vtkTriangleGridLocator::GetNumberOfTriangles()
+{
+  this->BuildLocator();
+  return this->Engine ? static_cast<vtkIdType>(this->Engine->Store().Size()) : 0;
+}
+
+unsigned long vtkTriangleGridLocator::GetMemoryBytes()
+{
+  this->BuildLocator();
+  return this->Engine ? static_cast<unsigned long>(this->Engine->MemoryBytes() + this->Engine->Store().MemoryBytes()) : 0;
+}
+
+void vtkTriangleGridLocator::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "AcceleratorType: " << this->AcceleratorType << "\n";
+  os << indent << "VoxelThreshold: " << this->VoxelThreshold << "\n";
+  os << indent << "Subdivisions: " << this->Subdivisions << "\n";
+  os << indent << "PlaneWeight: " << this->PlaneWeight << "\n";
+  os << indent << "TopLevelGrid: " << this->TopLevelGrid << "\n";
+  os << indent << "Engine: " << (this->Engine ? this->Engine->Name() : std::string("(not built)")) << "\n";
+}
