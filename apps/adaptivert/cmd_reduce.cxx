@@ -1,0 +1,215 @@
+// adaptivert reduce IN OUT.vtu: the least-squares reducer from voxels to an adaptive tet grid
+// (AdaptiveRT::Reduction), to a tet budget or an error bound, optionally with nested levels.
+#include "Command.h"
+
+#ifdef ART_HAVE_Reduction
+#include "DataLoader.h"
+#include "Error.h"
+#include "Json.h"
+#include "MeshQuality.h"
+#include "Progress.h"
+#include "ProgressBar.h"
+#include "ReducerVTK.h"
+#include "TetReducer.h"
+
+#include <vtkImageData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+namespace
+{
+// "N" or "P%" (a percentage of the voxel count) -> tets.
+long long ParseBudget(const std::string& s, long long voxels, const std::string& what)
+{
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  const bool pct = end && *end == '%' && end[1] == 0;
+  if (s.empty() || !end || (*end && !pct) || !(v > 0) || !std::isfinite(v))
+  {
+    throw cli::UsageError(what + " wants a positive number or a percentage, got '" + s + "'");
+  }
+  return pct ? std::llround(v / 100.0 * voxels) : std::llround(v);
+}
+
+std::string Grouped(long long n)
+{
+  std::string s = std::to_string(n), o;
+  for (size_t i = 0; i < s.size(); ++i)
+  {
+    o += s[i];
+    if ((s.size() - 1 - i) % 3 == 0 && i + 1 < s.size())
+    {
+      o += ',';
+    }
+  }
+  return o;
+}
+
+void Declare(cli::Options& o)
+{
+  o.Add("tets", 't', "N", "stop at N tetrahedra (or N% of the voxel count)");
+  o.Add("max-error", 'e', "E", "stop when the error is at most E data units (E% of the scalar range)");
+  o.Add("metric", 0, "rms|max", "which error --max-error bounds", "rms");
+  o.Add("levels", 0, "LIST", "also write nested levels from the same run, e.g. 0.01%,0.1%,5000: OUT_<n>.vtu");
+  o.Add("refine-fraction", 0, "F", "tet growth per refinement level", "0.2");
+  o.Add("tolerance", 0, "T", "conjugate-gradient relative residual", "1e-8");
+}
+
+int Run(const cli::Options& o)
+{
+  const auto& pos = o.Positional();
+  if (pos.size() != 2)
+  {
+    throw cli::UsageError("needs an input volume and an output .vtu");
+  }
+  const std::string in = pos[0], outPath = pos[1];
+  if (std::filesystem::path(outPath).extension() != ".vtu")
+  {
+    throw cli::UsageError("the output must be a .vtu file, got '" + outPath + "'");
+  }
+  if (!o.Has("tets") && !o.Has("max-error"))
+  {
+    throw cli::UsageError("give --tets N or --max-error E");
+  }
+  art::ReducerOptions opt;
+  const std::string metric = o.Get("metric");
+  if (metric != "rms" && metric != "max")
+  {
+    throw cli::UsageError("--metric is rms or max, got '" + metric + "'");
+  }
+  opt.ErrorMetric = metric == "max" ? art::ReducerOptions::Metric::Max : art::ReducerOptions::Metric::RMS;
+  opt.RefineFraction = o.GetDouble("refine-fraction");
+  opt.SolverTolerance = o.GetDouble("tolerance");
+  if (!(opt.RefineFraction > 0.0 && opt.RefineFraction <= 4.0) || !(opt.SolverTolerance > 0 && opt.SolverTolerance < 1))
+  {
+    throw cli::UsageError("--refine-fraction must be in (0, 4] and --tolerance in (0, 1)");
+  }
+
+  auto image = art::LoadVolume(in);
+  const art::VoxelVolume volume = art::VolumeFromImage(image, in);
+  const long long voxels = volume.NumberOfVoxels();
+  if (o.Has("tets"))
+  {
+    opt.TargetTets = ParseBudget(o.Get("tets"), voxels, "--tets");
+  }
+  if (o.Has("max-error"))
+  {
+    std::string e = o.Get("max-error");
+    opt.ErrorRelative = !e.empty() && e.back() == '%';
+    char* end = nullptr;
+    const double v = std::strtod(e.c_str(), &end);
+    if (e.empty() || (end && *end && !(opt.ErrorRelative && end[1] == 0 && *end == '%')) || !(v >= 0) || !std::isfinite(v))
+    {
+      throw cli::UsageError("--max-error wants a number or a percentage, got '" + e + "'");
+    }
+    opt.TargetError = opt.ErrorRelative ? v / 100.0 : v;
+  }
+  if (o.Has("levels"))
+  {
+    std::string list = o.Get("levels");
+    size_t a = 0;
+    while (a <= list.size())
+    {
+      const size_t b = std::min(list.find(',', a), list.size());
+      const long long n = ParseBudget(list.substr(a, b - a), voxels, "--levels");
+      if (opt.TargetTets <= 0 || n < opt.TargetTets)
+      {
+        opt.Levels.push_back(n);
+      }
+      a = b + 1;
+    }
+  }
+  for (long long b : opt.Levels)
+  {
+    if (b < 6)
+    {
+      throw cli::UsageError("a level below 6 tets is not possible (" + std::to_string(b) + ")");
+    }
+  }
+  if (opt.TargetTets > 0 && opt.TargetTets < 6)
+  {
+    throw cli::UsageError("--tets must be at least 6 (one box)");
+  }
+
+  const bool json = o.Flag("json");
+  cli::ProgressBar bar(o.Flag("quiet"));
+  art::Progress progress(bar.Callback());
+  const auto meshes = art::TetReducer(opt).Run(volume, &progress);
+  bar.Finish();
+  if (meshes.empty())
+  {
+    throw art::Error("the reduction produced no mesh", in);
+  }
+  const bool asDouble = volume.DoubleValues;
+  const double range = volume.Range[1] - volume.Range[0];
+  const double pct = range > 0 ? 100.0 / range : 0.0;
+  std::vector<cli::Json> levels;
+  const std::filesystem::path op(outPath);
+  for (size_t i = 0; i < meshes.size(); ++i)
+  {
+    const auto& m = meshes[i];
+    const bool last = i + 1 == meshes.size();
+    const std::string file = last ? outPath
+                                  : (op.parent_path() / (op.stem().string() + "_" +
+                                        std::to_string(m.TargetTets > 0 ? m.TargetTets : m.NumberOfTets()) + ".vtu")).string();
+    art::SaveMesh(art::ToUnstructuredGrid(m, asDouble), file);
+    cli::Json j;
+    j.Set("file", file).Set("tets", m.NumberOfTets()).Set("vertices", m.NumberOfVertices())
+      .Set("target_tets", m.TargetTets).Set("rms_error", m.Rms).Set("max_error", m.Max)
+      .Set("rms_error_percent", m.Rms * pct).Set("max_error_percent", m.Max * pct)
+      .Set("build_seconds", m.BuildSeconds).Set("target_reached", m.TargetReached);
+    levels.push_back(j);
+    if (!json)
+    {
+      std::printf("%-12s %s: %s tets, %s vertices, RMS %.4g (%.3f%% of range), max %.4g (%.2f%%), %.2f s%s\n",
+        last ? "output" : "level", file.c_str(), Grouped(m.NumberOfTets()).c_str(),
+        Grouped(m.NumberOfVertices()).c_str(), m.Rms, m.Rms * pct, m.Max, m.Max * pct, m.BuildSeconds,
+        m.TargetReached ? "" : " (error bound not reached: nothing left to refine)");
+    }
+  }
+  const auto& f = meshes.back();
+  const auto q = art::MeasureQuality(f.Points.data(), f.NumberOfVertices(), f.Tets.data(), f.NumberOfTets());
+  if (!q.Valid())
+  {
+    throw art::Error("internal: the output mesh failed its conformity check: " + q.Summary(), outPath);
+  }
+  if (json)
+  {
+    cli::Json j;
+    j.Set("input", in).Set("output", outPath).Set("voxels", voxels)
+      .Set("tets", f.NumberOfTets()).Set("vertices", f.NumberOfVertices())
+      .Set("rms_error", f.Rms).Set("max_error", f.Max).Set("rms_error_percent", f.Rms * pct)
+      .Set("max_error_percent", f.Max * pct).Set("build_seconds", f.BuildSeconds)
+      .Set("target_reached", f.TargetReached).Set("scalar_range", std::vector<double>{ volume.Range[0], volume.Range[1] })
+      .Set("min_dihedral_degrees", q.MinDihedralDegrees).Set("min_radius_ratio", q.MinRadiusRatio)
+      .Set("mean_radius_ratio", q.MeanRadiusRatio).Set("levels", levels);
+    std::printf("%s\n", j.Str().c_str());
+  }
+  else
+  {
+    std::printf("input        %s (%d x %d x %d = %s voxels, range %g .. %g)\n", in.c_str(), volume.Dims[0],
+      volume.Dims[1], volume.Dims[2], Grouped(voxels).c_str(), volume.Range[0], volume.Range[1]);
+    std::printf("tets         %s (%s vertices, %.4f%% of the voxel count)\n", Grouped(f.NumberOfTets()).c_str(),
+      Grouped(f.NumberOfVertices()).c_str(), 100.0 * f.NumberOfTets() / voxels);
+    std::printf("error        RMS %.4g, max %.4g data units (%.3f%% / %.2f%% of the range)\n", f.Rms, f.Max,
+      f.Rms * pct, f.Max * pct);
+    std::printf("quality      min dihedral %.1f deg, radius ratio min %.3f mean %.3f, 0 inverted, conforming\n",
+      q.MinDihedralDegrees, q.MinRadiusRatio, q.MeanRadiusRatio);
+    std::printf("time         %.2f s\n", f.BuildSeconds);
+  }
+  return cli::ExitOk;
+}
+
+cli::Registrar reg({ "reduce",
+  "reduce a volume to an adaptive tetrahedral grid by least squares (to a tet count or an error)",
+  "adaptivert reduce [options] IN OUT.vtu",
+  "  adaptivert reduce data/ct-head-128.mha head.vtu --tets 20000\n"
+  "  adaptivert reduce head.mha head.vtu --max-error 1% --metric rms\n"
+  "  adaptivert reduce head.mha head.vtu --tets 1% --levels 0.01%,0.1%   (writes head_<n>.vtu too)\n",
+  Declare, Run });
+} // namespace
+#endif

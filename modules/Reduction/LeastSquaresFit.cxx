@@ -1,0 +1,311 @@
+#include "LeastSquaresFit.h"
+
+#include "Error.h"
+#include "ParallelTiles.h"
+#include "VoxelRaster.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace art
+{
+namespace
+{
+constexpr int RegularizeBelow = 8; // voxel centres a tet needs to pin its four corners well
+
+// Deterministic parallel sum: fixed chunks, partial sums added in chunk order.
+template <class F>
+double ParallelSum(long long n, F&& term)
+{
+  const long long grain = 4096, chunks = (n + grain - 1) / grain;
+  std::vector<double> part(static_cast<size_t>(chunks), 0.0);
+  ForEachRange(chunks, 1, [&](long long c0, long long c1, Counters&) {
+    for (long long c = c0; c < c1; ++c)
+    {
+      double s = 0;
+      for (long long i = c * grain, e = std::min(n, i + grain); i < e; ++i)
+      {
+        s += term(i);
+      }
+      part[c] = s;
+    }
+  });
+  double s = 0;
+  for (double p : part)
+  {
+    s += p;
+  }
+  return s;
+}
+
+void Corners(const BisectionMesh& mesh, int t, LatticePoint P[4])
+{
+  for (int a = 0; a < 4; ++a)
+  {
+    P[a] = mesh.Vertex(mesh.Tet(t)[a]);
+  }
+}
+} // namespace
+
+int LeastSquaresFit::PackedIndex(int a, int b)
+{
+  static const int idx[4][4] = { { 0, 1, 2, 3 }, { 1, 4, 5, 6 }, { 2, 5, 7, 8 }, { 3, 6, 8, 9 } };
+  return idx[a][b];
+}
+
+LeastSquaresFit::LeastSquaresFit(const VoxelVolume& volume, double regularization)
+  : Volume(volume)
+  , Regularization(regularization)
+{
+}
+
+TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t) const
+{
+  LatticePoint P[4];
+  Corners(mesh, t, P);
+  TetRaster r;
+  if (!r.Setup(P))
+  {
+    throw Error("internal: a flat tetrahedron in the bisection mesh");
+  }
+  TetMoments m;
+  auto accumulate = [&](const auto* values) {
+    r.ForEachVoxel(Volume.Dims, [&](long long idx, const double* l) {
+      const double f = values[idx];
+      if (m.Count++ == 0)
+      {
+        m.F0 = f;
+      }
+      const double d = f - m.F0;
+      m.G += d * d;
+      m.M[0] += l[0] * l[0], m.M[1] += l[0] * l[1], m.M[2] += l[0] * l[2], m.M[3] += l[0] * l[3];
+      m.M[4] += l[1] * l[1], m.M[5] += l[1] * l[2], m.M[6] += l[1] * l[3];
+      m.M[7] += l[2] * l[2], m.M[8] += l[2] * l[3], m.M[9] += l[3] * l[3];
+      for (int a = 0; a < 4; ++a)
+      {
+        m.Bf[a] += l[a] * d;
+      }
+    });
+  };
+  if (Volume.DoubleValues)
+  {
+    accumulate(Volume.Double.data());
+  }
+  else
+  {
+    accumulate(Volume.Float.data());
+  }
+  m.Regularize = m.Count < RegularizeBelow || m.M[0] < 0.5 || m.M[4] < 0.5 || m.M[7] < 0.5 || m.M[9] < 0.5;
+  const double S = static_cast<double>(BisectionMesh::Scale);
+  m.Volume = static_cast<double>(r.SixVolume()) / 6.0 / (S * S * S);
+  return m;
+}
+
+void LeastSquaresFit::UpdateMoments(const BisectionMesh& mesh, const std::vector<int>& tets)
+{
+  Mom.resize(static_cast<size_t>(mesh.NumberOfTets()));
+  ForEachRange(static_cast<long long>(tets.size()), 64, [&](long long b, long long e, Counters&) {
+    for (long long i = b; i < e; ++i)
+    {
+      Mom[tets[i]] = Gather(mesh, tets[i]);
+    }
+  });
+}
+
+int LeastSquaresFit::Solve(const BisectionMesh& mesh, std::vector<double>& x, double tolerance, int maxIterations)
+{
+  const int nv = mesh.NumberOfVertices();
+  for (int v = static_cast<int>(x.size()); v < nv; ++v)
+  {
+    const auto& p = mesh.Parents(v); // new vertices start on the previous fit: exact warm start
+    x.push_back(p[0] >= 0 ? 0.5 * (x[p[0]] + x[p[1]]) : 0.0);
+  }
+  const std::vector<double> anchor = x; // the previous fit, interpolated onto new vertices
+  // CSR rows assembled independently, each from the tets around its vertex, in a fixed order.
+  std::vector<std::vector<int>> cols(nv);
+  std::vector<std::vector<double>> vals(nv);
+  std::vector<double> rhs(nv), diag(nv);
+  ForEachRange(nv, 256, [&](long long v0, long long v1, Counters&) {
+    std::vector<int> c;
+    for (long long v = v0; v < v1; ++v)
+    {
+      c.clear();
+      for (int t : mesh.TetsAround(static_cast<int>(v)))
+      {
+        for (int w : mesh.Tet(t))
+        {
+          c.push_back(w);
+        }
+      }
+      std::sort(c.begin(), c.end());
+      c.erase(std::unique(c.begin(), c.end()), c.end());
+      std::vector<double> val(c.size(), 0.0);
+      double bv = 0;
+      for (int t : mesh.TetsAround(static_cast<int>(v)))
+      {
+        const auto& tv = mesh.Tet(t);
+        const TetMoments& m = Mom[t];
+        const int a = static_cast<int>(std::find(tv.begin(), tv.end(), v) - tv.begin());
+        double rowSum = 0;
+        for (int b = 0; b < 4; ++b)
+        {
+          const int p = PackedIndex(a, b);
+          rowSum += m.M[p];
+          // Continuous P1 mass matrix: volume / 20 * (1 + delta_ab).
+          const double mc = m.Regularize ? Regularization * m.Volume / 20.0 * (a == b ? 2.0 : 1.0) : 0.0;
+          val[std::lower_bound(c.begin(), c.end(), tv[b]) - c.begin()] += m.M[p] + mc;
+          bv += mc * anchor[tv[b]];
+        }
+        bv += m.Bf[a] + m.F0 * rowSum; // sum lambda_a f = sum lambda_a (f - F0) + F0 sum lambda_a
+      }
+      rhs[v] = bv;
+      diag[v] = val[std::lower_bound(c.begin(), c.end(), static_cast<int>(v)) - c.begin()];
+      if (!(diag[v] > 0))
+      {
+        diag[v] = 1.0; // an unconstrained vertex (cannot happen with the regulariser); keep CG finite
+      }
+      cols[v] = c;
+      vals[v] = std::move(val);
+    }
+  });
+  auto spmv = [&](const std::vector<double>& in, std::vector<double>& out) {
+    ForEachRange(nv, 512, [&](long long v0, long long v1, Counters&) {
+      for (long long v = v0; v < v1; ++v)
+      {
+        double s = 0;
+        const auto& c = cols[v];
+        const auto& a = vals[v];
+        for (size_t q = 0; q < c.size(); ++q)
+        {
+          s += a[q] * in[c[q]];
+        }
+        out[v] = s;
+      }
+    });
+  };
+  std::vector<double> r(nv), z(nv), p(nv), q(nv);
+  spmv(x, q);
+  for (int v = 0; v < nv; ++v)
+  {
+    r[v] = rhs[v] - q[v];
+    z[v] = r[v] / diag[v];
+  }
+  p = z;
+  const double bnorm = std::sqrt(ParallelSum(nv, [&](long long i) { return rhs[i] * rhs[i]; }));
+  const double stop = tolerance * (bnorm > 0 ? bnorm : 1.0);
+  double rz = ParallelSum(nv, [&](long long i) { return r[i] * z[i]; });
+  int it = 0;
+  for (; it < maxIterations; ++it)
+  {
+    const double rn = std::sqrt(ParallelSum(nv, [&](long long i) { return r[i] * r[i]; }));
+    if (rn <= stop)
+    {
+      break;
+    }
+    spmv(p, q);
+    const double pq = ParallelSum(nv, [&](long long i) { return p[i] * q[i]; });
+    if (!(pq > 0))
+    {
+      break;
+    }
+    const double alpha = rz / pq;
+    ForEachRange(nv, 4096, [&](long long v0, long long v1, Counters&) {
+      for (long long v = v0; v < v1; ++v)
+      {
+        x[v] += alpha * p[v];
+        r[v] -= alpha * q[v];
+        z[v] = r[v] / diag[v];
+      }
+    });
+    const double rzNew = ParallelSum(nv, [&](long long i) { return r[i] * z[i]; });
+    const double beta = rzNew / rz;
+    rz = rzNew;
+    ForEachRange(nv, 4096, [&](long long v0, long long v1, Counters&) {
+      for (long long v = v0; v < v1; ++v)
+      {
+        p[v] = z[v] + beta * p[v];
+      }
+    });
+  }
+  return it;
+}
+
+void LeastSquaresFit::SquaredErrors(const BisectionMesh& mesh, const std::vector<double>& x, std::vector<double>& sse) const
+{
+  const int nt = mesh.NumberOfTets();
+  sse.assign(nt, 0.0);
+  ForEachRange(nt, 1024, [&](long long t0, long long t1, Counters&) {
+    for (long long t = t0; t < t1; ++t)
+    {
+      const TetMoments& m = Mom[t];
+      double d[4];
+      for (int a = 0; a < 4; ++a)
+      {
+        d[a] = x[mesh.Tet(static_cast<int>(t))[a]] - m.F0;
+      }
+      double s = m.G;
+      for (int a = 0; a < 4; ++a)
+      {
+        s -= 2 * d[a] * m.Bf[a];
+        for (int b = 0; b < 4; ++b)
+        {
+          s += d[a] * m.M[PackedIndex(a, b)] * d[b];
+        }
+      }
+      sse[t] = std::max(0.0, s);
+    }
+  });
+}
+
+void LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const std::vector<double>& x,
+  std::vector<double>& rms, std::vector<double>& maxErr, double& globalRms, double& globalMax) const
+{
+  const int nt = mesh.NumberOfTets();
+  rms.assign(nt, 0.0);
+  maxErr.assign(nt, 0.0);
+  std::vector<double> sse(nt, 0.0);
+  ForEachRange(nt, 64, [&](long long t0, long long t1, Counters&) {
+    for (long long t = t0; t < t1; ++t)
+    {
+      LatticePoint P[4];
+      Corners(mesh, static_cast<int>(t), P);
+      TetRaster r;
+      r.Setup(P);
+      double c[4];
+      for (int a = 0; a < 4; ++a)
+      {
+        c[a] = x[mesh.Tet(static_cast<int>(t))[a]];
+      }
+      double s = 0, mx = 0;
+      long long n = 0;
+      auto pass = [&](const auto* values) {
+        r.ForEachVoxel(Volume.Dims, [&](long long idx, const double* l) {
+          const double e = values[idx] - (c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3]);
+          s += e * e;
+          mx = std::max(mx, std::fabs(e));
+          ++n;
+        });
+      };
+      if (Volume.DoubleValues)
+      {
+        pass(Volume.Double.data());
+      }
+      else
+      {
+        pass(Volume.Float.data());
+      }
+      sse[t] = s;
+      rms[t] = n ? std::sqrt(s / n) : 0.0;
+      maxErr[t] = mx;
+    }
+  });
+  double total = 0, mx = 0;
+  for (int t = 0; t < nt; ++t)
+  {
+    total += sse[t];
+    mx = std::max(mx, maxErr[t]);
+  }
+  globalRms = std::sqrt(total / static_cast<double>(Volume.NumberOfVoxels()));
+  globalMax = mx;
+}
+} // namespace art

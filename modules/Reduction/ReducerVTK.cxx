@@ -1,0 +1,217 @@
+#include "ReducerVTK.h"
+
+#include "Error.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkImageData.h>
+#include <vtkIntArray.h>
+#include <vtkMatrix3x3.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <vector>
+
+namespace art
+{
+VoxelVolume VolumeFromImage(vtkImageData* image, const std::string& file)
+{
+  if (!image)
+  {
+    throw Error("no input image", file);
+  }
+  VoxelVolume v;
+  image->GetDimensions(v.Dims);
+  image->GetOrigin(v.Origin);
+  image->GetSpacing(v.Spacing);
+  // Extents need not start at 0: the origin moves to the first voxel.
+  int ext[6];
+  image->GetExtent(ext);
+  if (vtkMatrix3x3* m = image->GetDirectionMatrix())
+  {
+    for (int i = 0; i < 9; ++i)
+    {
+      v.Direction[i] = m->GetData()[i];
+    }
+  }
+  {
+    const double first[3] = { double(ext[0]) * v.Spacing[0], double(ext[2]) * v.Spacing[1], double(ext[4]) * v.Spacing[2] };
+    double o[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      o[r] = v.Origin[r] + v.Direction[3 * r] * first[0] + v.Direction[3 * r + 1] * first[1] +
+        v.Direction[3 * r + 2] * first[2];
+    }
+    std::copy(o, o + 3, v.Origin);
+  }
+  if (image->GetNumberOfPoints() == 0 || v.Dims[0] <= 0 || v.Dims[1] <= 0 || v.Dims[2] <= 0)
+  {
+    throw Error("the image is empty", file);
+  }
+  vtkDataArray* s = image->GetPointData()->GetScalars();
+  if (!s)
+  {
+    throw Error("the image has no point scalars", file);
+  }
+  if (s->GetNumberOfComponents() != 1)
+  {
+    throw Error("the scalars have " + std::to_string(s->GetNumberOfComponents()) +
+        " components; the reducer needs one (extract a component first)",
+      file);
+  }
+  v.Name = s->GetName() ? s->GetName() : "scalars";
+  const long long n = v.NumberOfVoxels();
+  if (s->GetNumberOfTuples() != n)
+  {
+    throw Error("the scalar array does not match the image dimensions", file);
+  }
+  const int type = s->GetDataType();
+  v.DoubleValues = type == VTK_DOUBLE || type == VTK_LONG_LONG || type == VTK_UNSIGNED_LONG_LONG ||
+    type == VTK_LONG || type == VTK_UNSIGNED_LONG || type == VTK_ID_TYPE || type == VTK_INT || type == VTK_UNSIGNED_INT;
+  if (v.DoubleValues)
+  {
+    v.Double.resize(static_cast<size_t>(n));
+    for (long long i = 0; i < n; ++i)
+    {
+      v.Double[i] = s->GetComponent(i, 0);
+    }
+  }
+  else
+  {
+    v.Float.resize(static_cast<size_t>(n));
+    if (auto* f = vtkFloatArray::SafeDownCast(s))
+    {
+      std::copy(f->GetPointer(0), f->GetPointer(0) + n, v.Float.begin());
+    }
+    else
+    {
+      for (long long i = 0; i < n; ++i)
+      {
+        v.Float[i] = static_cast<float>(s->GetComponent(i, 0));
+      }
+    }
+  }
+  v.Validate(file);
+  return v;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bool doubleValues)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  const vtkIdType nv = m.NumberOfVertices(), nt = m.NumberOfTets();
+  auto pts = vtkSmartPointer<vtkPoints>::New();
+  pts->SetDataTypeToDouble();
+  pts->SetNumberOfPoints(nv);
+  for (vtkIdType i = 0; i < nv; ++i)
+  {
+    pts->SetPoint(i, &m.Points[3 * i]);
+  }
+  grid->SetPoints(pts);
+
+  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto conn = vtkSmartPointer<vtkIdTypeArray>::New();
+  offsets->SetNumberOfValues(nt + 1);
+  conn->SetNumberOfValues(4 * nt);
+  for (vtkIdType t = 0; t <= nt; ++t)
+  {
+    offsets->SetValue(t, 4 * t);
+  }
+  for (vtkIdType i = 0; i < 4 * nt; ++i)
+  {
+    conn->SetValue(i, m.Tets[i]);
+  }
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsets, conn);
+  grid->SetCells(VTK_TETRA, cells);
+
+  vtkSmartPointer<vtkDataArray> values;
+  if (doubleValues)
+  {
+    values = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  else
+  {
+    values = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  values->SetName(m.ScalarName.c_str());
+  values->SetNumberOfTuples(nv);
+  for (vtkIdType i = 0; i < nv; ++i)
+  {
+    values->SetTuple1(i, m.Values[i]);
+  }
+  grid->GetPointData()->SetScalars(values);
+
+  auto cellArray = [&](const char* name, const std::vector<double>& a) {
+    auto arr = vtkSmartPointer<vtkFloatArray>::New();
+    arr->SetName(name);
+    arr->SetNumberOfTuples(nt);
+    for (vtkIdType t = 0; t < nt; ++t)
+    {
+      arr->SetValue(t, static_cast<float>(a[t]));
+    }
+    grid->GetCellData()->AddArray(arr);
+  };
+  cellArray("approximation_error", m.TetRms);
+  cellArray("max_error", m.TetMax);
+  grid->GetCellData()->SetActiveScalars("approximation_error");
+
+  vtkFieldData* fd = grid->GetFieldData();
+  auto field = [&](const char* name, double v) {
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(name);
+    a->SetNumberOfTuples(1);
+    a->SetValue(0, v);
+    fd->AddArray(a);
+  };
+  field("rms_error", m.Rms);
+  field("max_error", m.Max);
+  field("tets", static_cast<double>(nt));
+  field("vertices", static_cast<double>(nv));
+  field("build_seconds", m.BuildSeconds);
+  field("target_tets", static_cast<double>(m.TargetTets));
+  field("target_error", m.TargetError);
+  field("target_reached", m.TargetReached ? 1.0 : 0.0);
+  field("scalar_range_min", m.Range[0]);
+  field("scalar_range_max", m.Range[1]);
+  return grid;
+}
+
+QualityReport MeasureQuality(vtkUnstructuredGrid* grid)
+{
+  const vtkIdType nv = grid->GetNumberOfPoints(), nc = grid->GetNumberOfCells();
+  std::vector<double> p(3 * static_cast<size_t>(nv));
+  for (vtkIdType i = 0; i < nv; ++i)
+  {
+    grid->GetPoint(i, &p[3 * i]);
+  }
+  std::vector<int> t;
+  t.reserve(4 * static_cast<size_t>(nc));
+  long long other = 0;
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    if (grid->GetCellType(c) != VTK_TETRA)
+    {
+      ++other;
+      continue;
+    }
+    vtkIdType npts;
+    const vtkIdType* ids;
+    grid->GetCellPoints(c, npts, ids);
+    for (int a = 0; a < 4; ++a)
+    {
+      t.push_back(static_cast<int>(ids[a]));
+    }
+  }
+  QualityReport q = MeasureQuality(p.data(), nv, t.data(), static_cast<long long>(t.size() / 4));
+  q.Inverted += other;
+  q.Tets += other;
+  return q;
+}
+} // namespace art

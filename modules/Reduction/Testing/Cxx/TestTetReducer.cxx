@@ -1,0 +1,249 @@
+// The reducer on analytic fields (exact answers) and on the real CT head (independent check).
+#include "DataLoader.h"
+#include "Error.h"
+#include "MeshQuality.h"
+#include "ParallelTiles.h"
+#include "ReducerVTK.h"
+#include "TetReducer.h"
+
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkProbeFilter.h>
+#include <vtkShortArray.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+namespace
+{
+vtkSmartPointer<vtkImageData> Field(const int d[3], const double spacing[3], const double origin[3],
+  const std::function<double(double, double, double)>& f, bool shortValues = false)
+{
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->SetDimensions(d[0], d[1], d[2]);
+  img->SetSpacing(spacing[0], spacing[1], spacing[2]);
+  img->SetOrigin(origin[0], origin[1], origin[2]);
+  vtkSmartPointer<vtkDataArray> a;
+  if (shortValues)
+  {
+    a = vtkSmartPointer<vtkShortArray>::New();
+  }
+  else
+  {
+    a = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  a->SetName("density");
+  a->SetNumberOfTuples(img->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < img->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    img->GetPoint(i, p);
+    a->SetTuple1(i, f(p[0], p[1], p[2]));
+  }
+  img->GetPointData()->SetScalars(a);
+  return img;
+}
+
+void ExpectValid(const art::ReducedMesh& m)
+{
+  const auto q = art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets());
+  EXPECT_TRUE(q.Valid()) << q.Summary();
+  EXPECT_EQ(q.Inverted, 0);
+  EXPECT_EQ(q.OpenFaces, 0);
+  EXPECT_EQ(q.OverSharedFaces, 0);
+  EXPECT_EQ(q.InteriorFaces * 2 + q.BoundaryFaces, 4 * m.NumberOfTets());
+}
+
+double FieldValue(vtkFieldData* fd, const char* name)
+{
+  vtkDataArray* a = fd->GetArray(name);
+  return a ? a->GetTuple1(0) : std::nan("");
+}
+} // namespace
+
+TEST(TetReducer, LinearRampIsReproducedByTheCoarseMesh)
+{
+  const int d[3] = { 33, 29, 21 };
+  const double s[3] = { 0.5, 1.0, 2.0 }, o[3] = { -3, 2, 1 };
+  auto img = Field(d, s, o, [](double x, double y, double z) { return 2 * x - 3 * y + 0.5 * z + 7; });
+  art::ReducerOptions opt;
+  opt.TargetTets = 48;
+  opt.SolverTolerance = 1e-14;
+  const auto vol = art::VolumeFromImage(img);
+  const auto out = art::TetReducer(opt).Run(vol);
+  ASSERT_EQ(out.size(), 1u);
+  const auto& m = out[0];
+  EXPECT_LE(m.NumberOfTets(), 48);
+  const double range = vol.Range[1] - vol.Range[0];
+  EXPECT_LT(m.Rms, 1e-11 * range);
+  EXPECT_LT(m.Max, 1e-10 * range);
+  // The fit at each vertex is the ramp itself.
+  for (long long v = 0; v < m.NumberOfVertices(); ++v)
+  {
+    const double* p = &m.Points[3 * v];
+    EXPECT_NEAR(m.Values[v], 2 * p[0] - 3 * p[1] + 0.5 * p[2] + 7, 1e-9 * range);
+  }
+  ExpectValid(m);
+}
+
+TEST(TetReducer, QuadraticErrorFallsAsTheBudgetGrowsAndBudgetsAreMet)
+{
+  const int d[3] = { 48, 40, 36 };
+  const double s[3] = { 1, 1, 1.25 }, o[3] = { 0, 0, 0 };
+  auto img = Field(d, s, o, [](double x, double y, double z) {
+    return 0.05 * ((x - 20) * (x - 20) + 2 * (y - 15) * (y - 15) + 0.5 * (z - 30) * (z - 30));
+  });
+  art::ReducerOptions opt;
+  opt.Levels = { 100, 400, 1600 };
+  opt.TargetTets = 6400;
+  const auto out = art::TetReducer(opt).Run(art::VolumeFromImage(img));
+  ASSERT_EQ(out.size(), 4u);
+  for (size_t i = 0; i < out.size(); ++i)
+  {
+    const long long want = out[i].TargetTets;
+    EXPECT_NEAR(double(out[i].NumberOfTets()), double(want), 0.05 * want) << "level " << i;
+    if (i > 0)
+    {
+      EXPECT_LT(out[i].Rms, 0.7 * out[i - 1].Rms) << "level " << i;
+      EXPECT_LT(out[i].Max, out[i - 1].Max) << "level " << i;
+      EXPECT_GE(out[i].BuildSeconds, out[i - 1].BuildSeconds);
+      EXPECT_GT(out[i].NumberOfVertices(), out[i - 1].NumberOfVertices());
+    }
+    ExpectValid(out[i]);
+  }
+}
+
+TEST(TetReducer, ErrorTargetsAreMet)
+{
+  const int d[3] = { 40, 40, 40 };
+  const double s[3] = { 1, 1, 1 }, o[3] = { 0, 0, 0 };
+  auto img = Field(d, s, o, [](double x, double y, double z) {
+    return 100.0 * std::sin(0.15 * x) * std::cos(0.1 * y) + 0.2 * z;
+  });
+  const auto vol = art::VolumeFromImage(img);
+  art::ReducerOptions opt;
+  opt.TargetError = 0.01; // 1% of the range, RMS
+  opt.ErrorRelative = true;
+  auto rms = art::TetReducer(opt).Run(vol);
+  ASSERT_FALSE(rms.empty());
+  EXPECT_TRUE(rms.back().TargetReached);
+  EXPECT_LE(rms.back().Rms, 0.01 * (vol.Range[1] - vol.Range[0]));
+  opt.ErrorMetric = art::ReducerOptions::Metric::Max;
+  opt.TargetError = 2.0; // data units
+  opt.ErrorRelative = false;
+  auto mx = art::TetReducer(opt).Run(vol);
+  ASSERT_FALSE(mx.empty());
+  EXPECT_TRUE(mx.back().TargetReached);
+  EXPECT_LE(mx.back().Max, 2.0);
+  ExpectValid(mx.back());
+}
+
+TEST(TetReducer, DeterministicForAnyThreadCount)
+{
+  auto vol = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/data/ct-head-128.mha");
+  art::ReducerOptions opt;
+  opt.TargetTets = 3000;
+  const auto v = art::VolumeFromImage(vol);
+  const int before = art::GetThreadCount();
+  art::SetThreadCount(1);
+  const auto a = art::TetReducer(opt).Run(v);
+  art::SetThreadCount(2);
+  const auto b = art::TetReducer(opt).Run(v);
+  art::SetThreadCount(before);
+  ASSERT_EQ(a.back().Tets, b.back().Tets);
+  ASSERT_EQ(a.back().Points, b.back().Points);
+  EXPECT_EQ(a.back().Values, b.back().Values);
+  EXPECT_EQ(a.back().Rms, b.back().Rms);
+}
+
+TEST(TetReducer, RealCTHeadErrorMatchesAProbeAtTheVoxelCentres)
+{
+  auto img = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/data/ct-head-128.mha");
+  const auto vol = art::VolumeFromImage(img);
+  art::ReducerOptions opt;
+  opt.Levels = { 900, 9000 };
+  opt.TargetTets = 40000;
+  const auto out = art::TetReducer(opt).Run(vol);
+  ASSERT_EQ(out.size(), 3u);
+  double previous = 1e300;
+  for (const auto& m : out)
+  {
+    EXPECT_NEAR(double(m.NumberOfTets()), double(m.TargetTets), 0.05 * m.TargetTets);
+    ExpectValid(m);
+    auto grid = art::ToUnstructuredGrid(m);
+    // Independent check: VTK's probe interpolates the output grid at every voxel centre.
+    auto probe = vtkSmartPointer<vtkProbeFilter>::New();
+    probe->SetInputData(img);
+    probe->SetSourceData(grid);
+    probe->Update();
+    vtkDataArray* fit = probe->GetOutput()->GetPointData()->GetArray(vol.Name.c_str());
+    vtkDataArray* valid = probe->GetOutput()->GetPointData()->GetArray("vtkValidPointMask");
+    ASSERT_TRUE(fit && valid);
+    vtkDataArray* orig = img->GetPointData()->GetScalars();
+    double sse = 0, mx = 0;
+    long long invalid = 0;
+    for (vtkIdType i = 0; i < img->GetNumberOfPoints(); ++i)
+    {
+      invalid += valid->GetTuple1(i) == 0 ? 1 : 0;
+      const double e = orig->GetTuple1(i) - fit->GetTuple1(i);
+      sse += e * e;
+      mx = std::max(mx, std::fabs(e));
+    }
+    const double rms = std::sqrt(sse / img->GetNumberOfPoints());
+    EXPECT_EQ(invalid, 0);
+    // The grid stores float values: agreement to float precision of the HU range.
+    EXPECT_NEAR(rms, m.Rms, 1e-3 + 1e-5 * m.Rms);
+    EXPECT_NEAR(mx, m.Max, 1e-2);
+    EXPECT_NEAR(FieldValue(grid->GetFieldData(), "rms_error"), m.Rms, 1e-12);
+    EXPECT_EQ(FieldValue(grid->GetFieldData(), "tets"), double(m.NumberOfTets()));
+    EXPECT_LT(m.Rms, previous);
+    previous = m.Rms;
+  }
+}
+
+TEST(TetReducer, BadInputIsAClearError)
+{
+  const double s[3] = { 1, 1, 1 }, o[3] = { 0, 0, 0 };
+  const int flat[3] = { 10, 10, 1 };
+  auto img = Field(flat, s, o, [](double x, double, double) { return x; });
+  EXPECT_THROW(
+    {
+      try
+      {
+        art::VolumeFromImage(img, "flat.vti");
+      }
+      catch (const art::Error& e)
+      {
+        EXPECT_NE(std::string(e.what()).find("2-D image"), std::string::npos) << e.what();
+        throw;
+      }
+    },
+    art::Error);
+  const int d[3] = { 5, 5, 5 };
+  auto vec = Field(d, s, o, [](double x, double, double) { return x; });
+  auto three = vtkSmartPointer<vtkDoubleArray>::New();
+  three->SetNumberOfComponents(3);
+  three->SetNumberOfTuples(125);
+  three->Fill(1.0);
+  vec->GetPointData()->SetScalars(three);
+  try
+  {
+    art::VolumeFromImage(vec);
+    FAIL() << "accepted 3 components";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("3 components"), std::string::npos) << e.what();
+  }
+  auto empty = vtkSmartPointer<vtkImageData>::New();
+  EXPECT_THROW(art::VolumeFromImage(empty), art::Error);
+  art::ReducerOptions none;
+  auto ok = art::VolumeFromImage(Field(d, s, o, [](double x, double, double) { return x; }));
+  EXPECT_THROW(art::TetReducer(none).Run(ok), art::Error);
+}

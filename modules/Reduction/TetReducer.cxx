@@ -1,0 +1,298 @@
+#include "TetReducer.h"
+
+#include "BisectionMesh.h"
+#include "Error.h"
+#include "LeastSquaresFit.h"
+#include "Progress.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+namespace art
+{
+void TetReducer::CoarseGrid(const VoxelVolume& volume, long long tets, int cubes[3])
+{
+  double L[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    L[a] = std::max(1e-30, (volume.Dims[a] - 1) * std::fabs(volume.Spacing[a]));
+  }
+  const double boxes = std::max(1.0, std::min(512.0, tets / 6.0));
+  const double h = std::cbrt(L[0] * L[1] * L[2] / boxes);
+  for (int a = 0; a < 3; ++a)
+  {
+    cubes[a] = std::max(1, std::min(volume.Dims[a] - 1, static_cast<int>(std::lround(L[a] / h))));
+  }
+  // Rounding up may overshoot the budget: shrink the longest axis until it fits.
+  while (6LL * cubes[0] * cubes[1] * cubes[2] > std::max<long long>(6, tets))
+  {
+    int a = 0;
+    for (int b = 1; b < 3; ++b)
+    {
+      if (L[b] / cubes[b] < L[a] / cubes[a] && cubes[b] > 1)
+      {
+        a = b;
+      }
+    }
+    if (cubes[a] == 1)
+    {
+      a = static_cast<int>(std::max_element(cubes, cubes + 3) - cubes);
+    }
+    --cubes[a];
+  }
+}
+
+namespace
+{
+ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const LeastSquaresFit& fit,
+  const std::vector<double>& x)
+{
+  ReducedMesh out;
+  fit.VoxelErrors(mesh, x, out.TetRms, out.TetMax, out.Rms, out.Max);
+  const int nv = mesh.NumberOfVertices(), nt = mesh.NumberOfTets();
+  out.Points.resize(3 * static_cast<size_t>(nv));
+  const double S = static_cast<double>(BisectionMesh::Scale);
+  for (int v = 0; v < nv; ++v)
+  {
+    const LatticePoint& p = mesh.Vertex(v);
+    const double ijk[3] = { p.x / S, p.y / S, p.z / S };
+    vol.IndexToWorld(ijk, &out.Points[3 * static_cast<size_t>(v)]);
+  }
+  out.Values.assign(x.begin(), x.begin() + nv);
+  out.Tets.resize(4 * static_cast<size_t>(nt));
+  for (int t = 0; t < nt; ++t)
+  {
+    auto v = mesh.Tet(t);
+    const double* p[4];
+    for (int a = 0; a < 4; ++a)
+    {
+      p[a] = &out.Points[3 * static_cast<size_t>(v[a])];
+    }
+    double e[3][3];
+    for (int a = 0; a < 3; ++a)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        e[a][d] = p[a + 1][d] - p[0][d];
+      }
+    }
+    const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+      e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    if (det < 0)
+    {
+      std::swap(v[1], v[2]); // VTK_TETRA wants (p1-p0)x(p2-p0).(p3-p0) > 0
+    }
+    std::copy(v.begin(), v.end(), out.Tets.begin() + 4 * static_cast<size_t>(t));
+  }
+  out.Range[0] = vol.Range[0];
+  out.Range[1] = vol.Range[1];
+  out.ScalarName = vol.Name;
+  return out;
+}
+} // namespace
+
+std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* progress,
+  const std::function<void(const ReducedMesh&)>& onLevel) const
+{
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const long long nvox = volume.NumberOfVoxels();
+  if (volume.Dims[0] < 2 || volume.Dims[1] < 2 || volume.Dims[2] < 2)
+  {
+    throw Error("a 2-D or empty image cannot be reduced to tetrahedra");
+  }
+  const bool haveError = Opt.TargetError >= 0;
+  std::vector<long long> budgets = Opt.Levels;
+  if (Opt.TargetTets > 0)
+  {
+    budgets.push_back(Opt.TargetTets);
+  }
+  for (long long b : budgets)
+  {
+    if (b < 6)
+    {
+      throw Error("a tet budget must be at least 6 (one box), got " + std::to_string(b));
+    }
+  }
+  std::sort(budgets.begin(), budgets.end());
+  budgets.erase(std::unique(budgets.begin(), budgets.end()), budgets.end());
+  if (budgets.empty() && !haveError)
+  {
+    throw Error("set a target tet count or a maximum error");
+  }
+  // Without a tet budget the error bound alone decides; never more tets than 6 per voxel.
+  const long long cap = Opt.TargetTets > 0 ? Opt.TargetTets : (haveError ? 6 * nvox : budgets.back());
+  const double errorBound =
+    haveError ? Opt.TargetError * (Opt.ErrorRelative ? (volume.Range[1] - volume.Range[0]) : 1.0) : -1.0;
+  const bool maxMetric = Opt.ErrorMetric == ReducerOptions::Metric::Max;
+  const double range = std::max(volume.Range[1] - volume.Range[0], 1e-300);
+
+  BisectionMesh mesh;
+  int cubes[3];
+  const long long smallest = budgets.empty() ? nvox / 2000 : budgets.front();
+  CoarseGrid(volume, Opt.CoarseTets > 0 ? Opt.CoarseTets : std::max<long long>(6, smallest / 4), cubes);
+  mesh.InitKuhn(volume.Dims, cubes);
+  const int n0 = mesh.NumberOfTets();
+
+  LeastSquaresFit fit(volume, Opt.Regularization);
+  std::vector<int> touched(n0);
+  std::iota(touched.begin(), touched.end(), 0);
+  fit.UpdateMoments(mesh, touched);
+  std::vector<double> x;
+  int iterations = fit.Solve(mesh, x, Opt.SolverTolerance);
+
+  if (progress)
+  {
+    progress->Begin("reduce", 1.0);
+  }
+  double reported = 0, firstError = -1;
+  auto report = [&](double f) {
+    f = std::min(1.0, std::max(reported, f));
+    if (progress && f > reported)
+    {
+      progress->Advance(f - reported);
+      reported = f;
+    }
+  };
+
+  std::vector<ReducedMesh> out;
+  auto emit = [&](long long budget, bool reached, int level) {
+    ReducedMesh m = Snapshot(volume, mesh, fit, x);
+    m.TargetTets = budget;
+    m.TargetError = errorBound;
+    m.TargetReached = reached;
+    m.RefinementLevels = level;
+    m.SolverIterations = iterations;
+    m.BuildSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (onLevel)
+    {
+      onLevel(m);
+    }
+    out.push_back(std::move(m));
+  };
+
+  size_t bi = 0;
+  std::vector<double> priority, tetRms;
+  for (int level = 0;; ++level)
+  {
+    if (progress && progress->Cancelled())
+    {
+      throw Error("cancelled");
+    }
+    const long long nt = mesh.NumberOfTets();
+    while (bi < budgets.size() && nt >= budgets[bi])
+    {
+      emit(budgets[bi], true, level);
+      ++bi;
+    }
+    // The error that decides: cached moments give the squared error per tet for free; the
+    // max needs a pass over the voxels.
+    double global;
+    if (maxMetric && haveError)
+    {
+      double rms;
+      fit.VoxelErrors(mesh, x, tetRms, priority, rms, global);
+    }
+    else
+    {
+      fit.SquaredErrors(mesh, x, priority);
+      global = std::sqrt(std::accumulate(priority.begin(), priority.end(), 0.0) / nvox);
+    }
+    if (haveError && global <= errorBound)
+    {
+      if (out.empty() || out.back().NumberOfTets() != nt)
+      {
+        emit(0, true, level);
+      }
+      break;
+    }
+    if (!haveError && bi == budgets.size())
+    {
+      break;
+    }
+    if (nt >= cap)
+    {
+      if (out.empty() || out.back().NumberOfTets() != nt)
+      {
+        emit(0, false, level);
+      }
+      break;
+    }
+    const long long goal = bi < budgets.size() ? std::min(cap, budgets[bi]) : cap;
+    const long long next = std::min(goal,
+      std::max(nt + 1, static_cast<long long>(std::ceil(nt * (1.0 + Opt.RefineFraction)))));
+
+    std::vector<int> cand;
+    const double minEdge2 = Opt.MinEdgeVoxels * Opt.MinEdgeVoxels;
+    for (int t = 0; t < nt; ++t)
+    {
+      // Squared errors at round-off level are not worth a tet.
+      const TetMoments& mt = fit.Moments(t);
+      const double roundOff = std::max(1e-24 * range * range * std::max(1, mt.Count), 1e-10 * mt.G);
+      const double threshold = (maxMetric && haveError) ? std::max(errorBound, 1e-12 * range) : roundOff;
+      if (priority[t] > threshold && mesh.RefinementEdgeLength2(t) >= minEdge2 && mesh.CanBisect(t))
+      {
+        cand.push_back(t);
+      }
+    }
+    if (cand.empty())
+    {
+      // Nothing left to refine: the field is matched as well as this resolution allows.
+      for (; bi < budgets.size(); ++bi)
+      {
+        emit(budgets[bi], false, level);
+      }
+      if (haveError && (out.empty() || out.back().NumberOfTets() != nt))
+      {
+        emit(0, false, level);
+      }
+      break;
+    }
+    std::sort(cand.begin(), cand.end(), [&](int a, int b) {
+      return priority[a] != priority[b] ? priority[a] > priority[b] : a < b;
+    });
+    std::vector<uint32_t> version(nt);
+    for (int t = 0; t < nt; ++t)
+    {
+      version[t] = mesh.Version(t);
+    }
+    touched.clear();
+    for (int t : cand)
+    {
+      if (mesh.Version(t) != version[t])
+      {
+        continue; // already cut by the closure of a worse tet
+      }
+      mesh.Refine(t, touched);
+      if (mesh.NumberOfTets() >= next)
+      {
+        break;
+      }
+    }
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    fit.UpdateMoments(mesh, touched);
+    iterations += fit.Solve(mesh, x, Opt.SolverTolerance);
+
+    if (haveError && budgets.empty())
+    {
+      firstError = firstError < 0 ? global : firstError;
+      if (firstError > errorBound && errorBound > 0)
+      {
+        report(std::log(firstError / global) / std::log(firstError / errorBound));
+      }
+    }
+    else
+    {
+      report(std::log(double(mesh.NumberOfTets()) / n0) / std::log(double(std::max<long long>(cap, n0 + 1)) / n0));
+    }
+  }
+  if (progress)
+  {
+    progress->End();
+  }
+  return out;
+}
+} // namespace art

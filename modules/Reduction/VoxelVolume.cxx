@@ -1,0 +1,46 @@
+#include "VoxelVolume.h"
+
+#include "Error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace art
+{
+void VoxelVolume::Validate(const std::string& file)
+{
+  if (Dims[0] < 1 || Dims[1] < 1 || Dims[2] < 1 || NumberOfVoxels() == 0)
+  {
+    throw Error("the image is empty", file);
+  }
+  if (Dims[0] < 2 || Dims[1] < 2 || Dims[2] < 2)
+  {
+    throw Error("a 2-D image (" + std::to_string(Dims[0]) + " x " + std::to_string(Dims[1]) +
+        " x " + std::to_string(Dims[2]) + ") cannot be reduced to tetrahedra; it needs at least 2 voxels along each axis",
+      file);
+  }
+  if (Dims[0] > 16384 || Dims[1] > 16384 || Dims[2] > 16384)
+  {
+    throw Error("more than 16384 voxels along an axis is not supported", file);
+  }
+  const long long n = NumberOfVoxels();
+  if ((DoubleValues ? static_cast<long long>(Double.size()) : static_cast<long long>(Float.size())) != n)
+  {
+    throw Error("the scalar array does not match the image dimensions", file);
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (long long i = 0; i < n; ++i)
+  {
+    const double v = Value(i);
+    if (!std::isfinite(v))
+    {
+      throw Error("the scalars hold NaN or infinite values", file);
+    }
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  Range[0] = lo;
+  Range[1] = hi;
+}
+} // namespace art

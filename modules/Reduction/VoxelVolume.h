@@ -1,0 +1,39 @@
+// VoxelVolume: the scalar samples the reducer fits, kept as float (or double for double input)
+// in VTK's x-fastest order, with the geometry that maps voxel indices to world coordinates.
+#ifndef art_VoxelVolume_h
+#define art_VoxelVolume_h
+
+#include <string>
+#include <vector>
+
+namespace art
+{
+struct VoxelVolume
+{
+  int Dims[3] = { 0, 0, 0 };
+  double Origin[3] = { 0, 0, 0 };
+  double Spacing[3] = { 1, 1, 1 };
+  double Direction[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  std::vector<float> Float;   ///< the samples, unless DoubleValues
+  std::vector<double> Double; ///< the samples of double (or 64-bit integer) input
+  bool DoubleValues = false;
+  std::string Name = "scalars";
+  double Range[2] = { 0, 0 };
+
+  long long NumberOfVoxels() const { return static_cast<long long>(Dims[0]) * Dims[1] * Dims[2]; }
+  double Value(long long i) const { return DoubleValues ? Double[i] : Float[i]; }
+  /// World position of continuous voxel index coordinates (i, j, k).
+  void IndexToWorld(const double ijk[3], double w[3]) const
+  {
+    const double s[3] = { ijk[0] * Spacing[0], ijk[1] * Spacing[1], ijk[2] * Spacing[2] };
+    for (int r = 0; r < 3; ++r)
+    {
+      w[r] = Origin[r] + Direction[3 * r] * s[0] + Direction[3 * r + 1] * s[1] + Direction[3 * r + 2] * s[2];
+    }
+  }
+  /// Fills Range from the samples; throws art::Error on an empty volume or a 2-D image.
+  void Validate(const std::string& file = {});
+};
+} // namespace art
+
+#endif

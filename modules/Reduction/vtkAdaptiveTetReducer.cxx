@@ -1,0 +1,143 @@
+#include "vtkAdaptiveTetReducer.h"
+
+#include "Error.h"
+#include "Progress.h"
+#include "ReducerVTK.h"
+#include "TetReducer.h"
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkUnstructuredGrid.h>
+
+vtkStandardNewMacro(vtkAdaptiveTetReducer);
+
+vtkAdaptiveTetReducer::vtkAdaptiveTetReducer()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(2);
+}
+
+void vtkAdaptiveTetReducer::AddLevel(vtkIdType tets)
+{
+  this->Levels.push_back(tets);
+  this->Modified();
+}
+
+void vtkAdaptiveTetReducer::RemoveAllLevels()
+{
+  if (!this->Levels.empty())
+  {
+    this->Levels.clear();
+    this->Modified();
+  }
+}
+
+vtkIdType vtkAdaptiveTetReducer::GetLevel(int i) const
+{
+  return i >= 0 && i < static_cast<int>(this->Levels.size()) ? this->Levels[i] : 0;
+}
+
+int vtkAdaptiveTetReducer::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  return 1;
+}
+
+int vtkAdaptiveTetReducer::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkUnstructuredGrid" : "vtkMultiBlockDataSet");
+  return 1;
+}
+
+int vtkAdaptiveTetReducer::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The fit needs every voxel: always ask for the whole extent.
+  vtkInformation* in = inputVector[0]->GetInformationObject(0);
+  if (in->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+      in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+  }
+  in->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
+  return 1;
+}
+
+int vtkAdaptiveTetReducer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkImageData* input = vtkImageData::GetData(inputVector[0]);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  vtkMultiBlockDataSet* levels = vtkMultiBlockDataSet::GetData(outputVector, 1);
+  if (this->TargetTets <= 0 && this->TargetError < 0)
+  {
+    vtkErrorMacro("Set TargetTets or TargetError.");
+    return 0;
+  }
+  art::ReducerOptions opt;
+  opt.TargetTets = this->TargetTets;
+  opt.TargetError = this->TargetError;
+  opt.ErrorMetric = this->ErrorMetric == MAX ? art::ReducerOptions::Metric::Max : art::ReducerOptions::Metric::RMS;
+  opt.ErrorRelative = this->ErrorRelative;
+  opt.RefineFraction = this->RefineFraction;
+  opt.SolverTolerance = this->SolverTolerance;
+  for (vtkIdType l : this->Levels)
+  {
+    if (l > 0 && (this->TargetTets <= 0 || l < this->TargetTets))
+    {
+      opt.Levels.push_back(l);
+    }
+  }
+  // Progress is reported from the driver loop (this thread), never from worker threads.
+  art::Progress progress([this](double f, const std::string&) { this->UpdateProgress(f); });
+  try
+  {
+    const art::VoxelVolume volume = art::VolumeFromImage(input);
+    vtkDataArray* s = input->GetPointData()->GetScalars();
+    const bool asDouble = s->GetDataType() == VTK_DOUBLE;
+    const std::vector<art::ReducedMesh> meshes = art::TetReducer(opt).Run(volume, &progress);
+    if (meshes.empty())
+    {
+      vtkErrorMacro("The reduction produced no mesh.");
+      return 0;
+    }
+    const art::ReducedMesh& last = meshes.back();
+    output->ShallowCopy(art::ToUnstructuredGrid(last, asDouble));
+    this->RMSError = last.Rms;
+    this->MaxError = last.Max;
+    this->BuildSeconds = last.BuildSeconds;
+    levels->SetNumberOfBlocks(static_cast<unsigned int>(meshes.size()));
+    for (unsigned int i = 0; i < meshes.size(); ++i)
+    {
+      levels->SetBlock(i, art::ToUnstructuredGrid(meshes[i], asDouble));
+      levels->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(),
+        ("tets_" + std::to_string(meshes[i].NumberOfTets())).c_str());
+    }
+  }
+  catch (const art::Error& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  return 1;
+}
+
+void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TargetTets: " << this->TargetTets << "\n";
+  os << indent << "TargetError: " << this->TargetError << "\n";
+  os << indent << "ErrorMetric: " << (this->ErrorMetric == MAX ? "MAX" : "RMS") << "\n";
+  os << indent << "ErrorRelative: " << this->ErrorRelative << "\n";
+  os << indent << "RefineFraction: " << this->RefineFraction << "\n";
+  os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
+  os << indent << "Levels: " << this->Levels.size() << "\n";
+  os << indent << "RMSError: " << this->RMSError << "\n";
+  os << indent << "MaxError: " << this->MaxError << "\n";
+}

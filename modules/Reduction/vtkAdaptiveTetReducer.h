@@ -1,0 +1,115 @@
+/**
+ * @class vtkAdaptiveTetReducer
+ * @brief Reduces a volume (vtkImageData) to an adaptive tetrahedral grid by least squares.
+ *
+ * The multilevel finite-element reducer of Grosso, Luerig & Ertl (Vis '97): a coarse conforming
+ * tetrahedrisation of the volume's box is refined by newest-vertex bisection where the best
+ * piecewise-linear (L2) fit of the voxels is worst, until TargetTets or TargetError is met
+ * (whichever is set; with both, whichever comes first).
+ *
+ * Output port 0: vtkUnstructuredGrid of VTK_TETRA with point scalars named like the input (the
+ * fit at each vertex), cell arrays "approximation_error" (RMS over the voxels a tet owns) and
+ * "max_error", and field data rms_error, max_error, tets, vertices, build_seconds,
+ * target_tets, target_error. Output port 1: a vtkMultiBlockDataSet holding one such grid per
+ * level added with AddLevel (a nested series from one run, coarsest first) and the final grid.
+ *
+ * The input needs one scalar component and at least 2 voxels along each axis; any scalar type,
+ * spacing, origin and direction. Progress events are fired between refinement levels.
+ */
+#ifndef vtkAdaptiveTetReducer_h
+#define vtkAdaptiveTetReducer_h
+
+#include "AdaptiveRTReductionModule.h"
+#include "vtkUnstructuredGridAlgorithm.h"
+
+#include <vector>
+
+class ADAPTIVERTREDUCTION_EXPORT vtkAdaptiveTetReducer : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static vtkAdaptiveTetReducer* New();
+  vtkTypeMacro(vtkAdaptiveTetReducer, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ErrorMetrics
+  {
+    RMS = 0,
+    MAX = 1
+  };
+
+  /**
+   * Stop at this many tetrahedra (0, the default, leaves it unset).
+   */
+  vtkSetClampMacro(TargetTets, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(TargetTets, vtkIdType);
+
+  /**
+   * Stop once the global error is at most this (negative, the default, leaves it unset). In
+   * data units, or as a fraction of the scalar range when ErrorRelative is on.
+   */
+  vtkSetMacro(TargetError, double);
+  vtkGetMacro(TargetError, double);
+
+  /**
+   * Which global error TargetError bounds: RMS (default) or MAX over all voxels.
+   */
+  vtkSetClampMacro(ErrorMetric, int, RMS, MAX);
+  vtkGetMacro(ErrorMetric, int);
+  void SetErrorMetricToRMS() { this->SetErrorMetric(RMS); }
+  void SetErrorMetricToMax() { this->SetErrorMetric(MAX); }
+
+  vtkSetMacro(ErrorRelative, bool);
+  vtkGetMacro(ErrorRelative, bool);
+  vtkBooleanMacro(ErrorRelative, bool);
+
+  /**
+   * Growth of the tet count per refinement level (0.2: 20% more tets per re-fit).
+   */
+  vtkSetClampMacro(RefineFraction, double, 0.01, 4.0);
+  vtkGetMacro(RefineFraction, double);
+
+  /**
+   * Relative residual at which conjugate gradients stops.
+   */
+  vtkSetClampMacro(SolverTolerance, double, 1e-15, 1e-2);
+  vtkGetMacro(SolverTolerance, double);
+
+  /**
+   * Nested budgets (tet counts) emitted on output port 1 from the same run.
+   */
+  void AddLevel(vtkIdType tets);
+  void RemoveAllLevels();
+  int GetNumberOfLevels() const { return static_cast<int>(this->Levels.size()); }
+  vtkIdType GetLevel(int i) const;
+
+  /**
+   * Figures of the last run (also in the output's field data).
+   */
+  vtkGetMacro(RMSError, double);
+  vtkGetMacro(MaxError, double);
+  vtkGetMacro(BuildSeconds, double);
+
+protected:
+  vtkAdaptiveTetReducer();
+  ~vtkAdaptiveTetReducer() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  vtkIdType TargetTets = 0;
+  double TargetError = -1.0;
+  int ErrorMetric = RMS;
+  bool ErrorRelative = false;
+  double RefineFraction = 0.2;
+  double SolverTolerance = 1e-8;
+  std::vector<vtkIdType> Levels;
+  double RMSError = 0.0, MaxError = 0.0, BuildSeconds = 0.0;
+
+private:
+  vtkAdaptiveTetReducer(const vtkAdaptiveTetReducer&) = delete;
+  void operator=(const vtkAdaptiveTetReducer&) = delete;
+};
+
+#endif
