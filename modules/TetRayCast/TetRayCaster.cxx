@@ -4,6 +4,8 @@
 #include "ExactIntegrator.h"
 #include "ParallelTiles.h"
 #include "TetWalker.h"
+#include "Accelerator.h"
+#include "TriangleStore.h"
 
 #include <algorithm>
 #include <atomic>
@@ -123,24 +125,67 @@ struct TetRayCaster::Impl
     int px, int py, std::vector<Entry>& out, int& hint, Counters& c)
   {
     const bool convex = rc.M.IsConvex();
-    if (convex || !rc.Hits)
+    if (convex || !rc.Boundary)
     {
       f.Find(w, r, px, py, !convex, out, hint, c);
       return;
     }
-    // Non-convex with a boundary all-hits query: keep the hits that enter.
-    thread_local std::vector<std::pair<double, long long>> hits;
+    // Non-convex: every boundary surface along the ray from the TriangleGrid, sorted by t. Where
+    // the grid reports a surface once for a ray through a shared edge or vertex, the face it
+    // names may miss the exact Pluecker test by round-off: then its neighbours are tried.
+    thread_local std::vector<Hit> hits;
     hits.clear();
-    rc.Hits(rc.HitsCtx, r, hits, c);
+    Ray rr = r;
+    rc.Boundary->All(rr, hits, c);
     out.clear();
-    for (const auto& h : hits)
-    {
-      const auto& bf = rc.M.BoundaryFaces()[h.second];
+    const auto& bfs = rc.M.BoundaryFaces();
+    auto test = [&](long long b) {
+      const auto& bf = bfs[b];
       Entry e;
       if (w.Crosses(bf[0], bf[1], -1, e.x) && e.x.t >= r.tmin)
       {
-        e.face = static_cast<int>(h.second);
+        for (const Entry& o : out)
+        {
+          if (o.face == b)
+          {
+            return true;
+          }
+        }
+        e.face = static_cast<int>(b);
         out.push_back(e);
+        return true;
+      }
+      return false;
+    };
+    for (const Hit& h : hits)
+    {
+      if (test(h.triangle))
+      {
+        continue;
+      }
+      // Two rings of edge neighbours cover the faces around a vertex of ordinary valence.
+      int ring[3 + 9];
+      int n = 0;
+      for (int a : rc.M.BoundaryAdjacency(h.triangle))
+      {
+        if (a >= 0)
+        {
+          ring[n++] = a;
+        }
+      }
+      const int first = n;
+      for (int i = 0; i < first; ++i)
+      {
+        for (int a : rc.M.BoundaryAdjacency(ring[i]))
+        {
+          if (a >= 0 && a != h.triangle)
+          {
+            ring[n++] = a;
+          }
+        }
+      }
+      for (int i = 0; i < n && !test(ring[i]); ++i)
+      {
       }
     }
     std::stable_sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) { return a.x.t < b.x.t; });
@@ -201,6 +246,19 @@ TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
   {
     S.tf = TransferFunction::Preset("grey-ramp", M.ScalarRange(0), M.ScalarRange(1));
   }
+  if (!M.IsConvex() && S.boundaryGrid)
+  {
+    const auto& pts = M.PointsArray();
+    std::vector<std::array<long long, 3>> tris;
+    tris.reserve(M.BoundaryFaces().size());
+    for (const auto& bf : M.BoundaryFaces())
+    {
+      const auto& v = M.Tet(bf[0]);
+      const int* fv = TetMesh::FaceVertex[bf[1]];
+      tris.push_back({ v[fv[0]], v[fv[1]], v[fv[2]] });
+    }
+    Boundary = MakeAccelerator(std::make_shared<const TriangleStore>(pts, tris));
+  }
 }
 
 TetRayCaster::~TetRayCaster() = default;
@@ -228,7 +286,7 @@ RayResult TetRayCaster::Cast(const Ray& r) const
   int hint = -1;
   Counters c;
   std::uint64_t nudges = 0;
-  finder.Find(w, r, -1, -1, true, entries, hint, c);
+  Impl::Entries(*this, finder, w, r, -1, -1, entries, hint, c);
   if (S.rule == RenderSettings::Rule::Trapezoid)
   {
     Impl::Trace(*this, TrapezoidRule(S.tf), w, r, entries, res, c, nudges);

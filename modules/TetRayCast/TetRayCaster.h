@@ -15,10 +15,12 @@
 #include "TransferFunction.h"
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace art
 {
+class Accelerator;
 class Progress;
 
 struct IsoSurface
@@ -47,6 +49,9 @@ struct RenderSettings
   std::vector<IsoSurface> isos;
   double ambient = 0.3, diffuse = 0.7; ///< headlight shading of iso-surfaces
   int tileSize = 16;
+  /// Non-convex meshes: entry faces from the TriangleGrid all-hits query over the boundary
+  /// triangles (true) or from testing every face in the pixel's screen bucket (false).
+  bool boundaryGrid = true;
 };
 
 struct RayResult
@@ -67,7 +72,8 @@ struct RenderStats
 class ADAPTIVERTTETRAYCAST_EXPORT TetRayCaster
 {
 public:
-  /// Keeps a reference to `mesh`, which must outlive the caster.
+  /// Keeps a reference to `mesh`, which must outlive the caster. A non-convex mesh gets its
+  /// boundary faces put into a TriangleGrid (recursive grid) here.
   TetRayCaster(const TetMesh& mesh, RenderSettings settings);
   ~TetRayCaster();
 
@@ -79,19 +85,12 @@ public:
   const RenderSettings& Settings() const { return S; }
   const TetMesh& Mesh() const { return M; }
 
-  /// Optional: every entry point of a non-convex mesh from an all-hits query over its boundary
-  /// triangles (one per boundary face, in BoundaryFaces order): fills t values sorted, de-duplicated.
-  using AllHitsFn = void (*)(const void* ctx, const Ray& r, std::vector<std::pair<double, long long>>& hits,
-    Counters& c);
-  void SetBoundaryQuery(AllHitsFn fn, const void* ctx) { Hits = fn, HitsCtx = ctx; }
-
   struct Impl;
 
 private:
   const TetMesh& M;
   RenderSettings S;
-  AllHitsFn Hits = nullptr;
-  const void* HitsCtx = nullptr;
+  std::unique_ptr<const Accelerator> Boundary; ///< boundary triangles of a non-convex mesh
 };
 } // namespace art
 

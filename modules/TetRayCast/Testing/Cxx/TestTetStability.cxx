@@ -112,13 +112,20 @@ TEST(TetStability, SliverTets)
   Check(m, rc, MakeRay({ -1, 1.0, 1.0 }, { 1, 0, 0 }), "on the sliver layer's base");
 }
 
-TEST(TetStability, NonConvexRaysEnterTwice)
+class NonConvex : public ::testing::TestWithParam<bool>
 {
+};
+
+// Entry faces from the TriangleGrid all-hits query (true) and from the screen buckets (false).
+TEST_P(NonConvex, RaysEnterTwice)
+{
+  RenderSettings settings = Settings();
+  settings.boundaryGrid = GetParam();
   // L-shape: a quarter of the block removed.
   const TetMesh L = fixtures::GridMesh(4, 4, 2, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Wavy, 6,
     [](int i, int j, int) { return !(i >= 2 && j >= 2); });
   EXPECT_FALSE(L.IsConvex());
-  const TetRayCaster rc(L, Settings());
+  const TetRayCaster rc(L, settings);
   // Across both arms: leaves at x = 1, re-enters... along y at x in (0,1) it stays inside once.
   Check(L, rc, MakeRay({ 3.4, -1, 0.3 }, { -1, 1, 0.05 }), "L twice", 2);
   Check(L, rc, MakeRay({ 1.6, 2.5, 0.4 }, { -1, -1.2, 0 }), "L corner");
@@ -129,11 +136,20 @@ TEST(TetStability, NonConvexRaysEnterTwice)
     const Vec3 c(1.0 + 0.2 * std::sin(i), 1.0 + 0.2 * std::cos(i * 1.3), 0.5);
     Check(L, rc, MakeRay(c - dir * 4, dir), "L random");
   }
+  // Along grid lines and face diagonals: through the notch's concave edges and corner vertices.
+  for (double u : { 0.0, 0.5, 1.0, 1.5, 2.0 })
+    for (double z : { 0.0, 0.5, 1.0 })
+    {
+      Check(L, rc, MakeRay({ -1, u, z }, { 1, 0, 0 }), "L along x");
+      Check(L, rc, MakeRay({ u, 3, z }, { 0, -1, 0 }), "L along -y");
+      Check(L, rc, MakeRay({ u - 1.5, -1.5 + 0.0, z }, { 1, 1, 0 }), "L diagonal");
+      Check(L, rc, MakeRay({ u + 2, -1, z + 0.25 }, { -1, 1, 0 }), "L anti-diagonal");
+    }
   // A block with a tunnel through it (a hole): rays along x cross the tunnel.
   const TetMesh T = fixtures::GridMesh(5, 3, 3, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Wavy, 5,
     [](int i, int j, int k) { return !(j == 1 && k == 1 && i > 0 && i < 4); });
   EXPECT_FALSE(T.IsConvex());
-  const TetRayCaster rt(T, Settings());
+  const TetRayCaster rt(T, settings);
   Check(T, rt, MakeRay({ -1, 0.7, 0.7 }, { 1, 0.01, 0.02 }), "tunnel axis", 2);
   Check(T, rt, MakeRay({ 1.2, 0.75, -1 }, { 0.05, 0, 1 }), "across tunnel", 2);
   // The image path (screen buckets) agrees with single rays.
@@ -151,3 +167,5 @@ TEST(TetStability, NonConvexRaysEnterTwice)
       EXPECT_NEAR(img.Pixel(x, y)[0], ref.rgb[0], 1e-6) << x << "," << y;
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(TetStability, NonConvex, ::testing::Values(true, false));
