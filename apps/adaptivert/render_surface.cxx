@@ -1,0 +1,204 @@
+// The surface tracer behind `adaptivert render` for triangle scenes (.ply .obj .stl .vtp): the
+// TriangleGrid ray tracing machine with point lights, shadows and transparent surfaces.
+#include "Accelerator.h"
+#include "Camera.h"
+#include "Command.h"
+#include "DataLoader.h"
+#include "Error.h"
+#include "ImageIO.h"
+#include "Json.h"
+#include "ParallelTiles.h"
+#include "ProgressBar.h"
+#include "Render.h"
+#include "SurfaceTracer.h"
+
+#include <vtkCamera.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+namespace
+{
+void Declare(cli::Options& o)
+{
+  o.Add("accelerator", 0, "NAME", "triangle scenes: recursive, octree, uniform or brute", "recursive");
+  o.Add("threshold", 0, "N", "triangle scenes: voxel threshold (R: VOX_NTRG_THR, O: VX_THRESHOLD), 0 = default", "0");
+  o.Add("subdivisions", 0, "N", "triangle scenes: recursive grid N_SUB_VOXELS, 0 = default", "0");
+  o.Add("plane-weight", 0, "N", "triangle scenes: octree PLANE_WEIGHT, 0 = default", "0");
+  o.Add("no-top-grid", 0, "", "triangle scenes: recursive grid without the top-level grid");
+  o.Add("opacity", 0, "A", "triangle scenes: surface opacity; < 1 shows every surface and dims light through them", "1");
+  o.Add("lights", 0, "X,Y,Z[;..]", "triangle scenes: point lights (default: a headlight and a key light)");
+  o.Add("no-shadows", 0, "", "triangle scenes: no shadow rays");
+  o.Add("flat", 0, "", "triangle scenes: flat shading (no vertex normals)");
+  o.Add("color", 0, "R,G,B", "triangle scenes: surface colour when the scene has none", "0.85,0.82,0.75");
+  o.Add("camera-position", 0, "X,Y,Z", "put the camera here (e.g. inside a level) instead of framing the scene");
+  o.Add("focal-point", 0, "X,Y,Z", "with --camera-position: look at this point (default: the scene's centre)");
+  o.Add("view-angle", 0, "DEG", "vertical view angle of the perspective camera", "30");
+}
+
+art::Vec3 ParseVec(const std::string& s, const char* what)
+{
+  std::istringstream in(s);
+  art::Vec3 v;
+  char c1 = 0, c2 = 0;
+  if (!(in >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || !art::IsFinite(v))
+  {
+    throw cli::UsageError(std::string(what) + " expects X,Y,Z, got '" + s + "'");
+  }
+  return v;
+}
+
+int Run(const cli::Options& o, const std::string& input)
+{
+  const cli::View view = cli::ViewFromOptions(o);
+  cli::ProgressBar bar(o.Flag("quiet"));
+  art::Progress progress(bar.Callback());
+
+  auto t0 = std::chrono::steady_clock::now();
+  vtkSmartPointer<vtkPolyData> pd = art::LoadSurface(input);
+  auto store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd));
+  if (store->Size() == 0)
+  {
+    throw art::Error("has no triangles to render", input);
+  }
+  art::AcceleratorOptions ao;
+  ao.kind = art::AcceleratorKindFromName(o.Get("accelerator"));
+  ao.voxelThreshold = static_cast<int>(o.GetInt("threshold"));
+  ao.subdivisions = static_cast<int>(o.GetInt("subdivisions"));
+  ao.planeWeight = static_cast<int>(o.GetInt("plane-weight"));
+  ao.topLevelGrid = !o.Flag("no-top-grid");
+  if (ao.voxelThreshold < 0 || ao.subdivisions < 0 || ao.subdivisions > 16 || ao.planeWeight < 0)
+  {
+    throw cli::UsageError("--threshold, --subdivisions (<= 16) and --plane-weight expect counts >= 0");
+  }
+  const auto acc = art::MakeAccelerator(store, ao);
+  const double buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  const art::Box3 bounds = store->Bounds();
+  vtkNew<vtkCamera> vcam;
+  cli::SetupCamera(o, bounds, vcam);
+  const double angle = o.GetDouble("view-angle");
+  if (!(angle > 0 && angle < 180))
+  {
+    throw cli::UsageError("--view-angle expects degrees in (0, 180)");
+  }
+  vcam->SetViewAngle(angle);
+  if (o.Has("camera-position"))
+  {
+    const art::Vec3 p = ParseVec(o.Get("camera-position"), "--camera-position");
+    const art::Vec3 f = o.Has("focal-point") ? ParseVec(o.Get("focal-point"), "--focal-point") : bounds.Center();
+    if (p == f)
+    {
+      throw cli::UsageError("--camera-position and --focal-point must differ");
+    }
+    vcam->SetPosition(p.x, p.y, p.z);
+    vcam->SetFocalPoint(f.x, f.y, f.z);
+    vcam->SetViewUp(0, 0, 1);
+    vcam->OrthogonalizeViewUp();
+    vcam->Azimuth(o.GetDouble("azimuth"));
+    vcam->Elevation(o.GetDouble("elevation"));
+    vcam->OrthogonalizeViewUp();
+    vcam->Zoom(o.GetDouble("zoom"));
+  }
+  const art::Camera cam = art::Camera::FromVTK(vcam, view.width, view.height);
+
+  art::SurfaceTracerSettings s;
+  s.opacity = o.GetDouble("opacity");
+  if (!(s.opacity > 0 && s.opacity <= 1))
+  {
+    throw cli::UsageError("--opacity expects a value in (0, 1]");
+  }
+  s.shadows = !o.Flag("no-shadows");
+  s.smooth = !o.Flag("flat");
+  const art::Vec3 col = ParseVec(o.Get("color"), "--color");
+  s.color = { { float(col.x), float(col.y), float(col.z) } };
+  if (o.Has("lights"))
+  {
+    std::stringstream ss(o.Get("lights"));
+    std::string item;
+    while (std::getline(ss, item, ';'))
+    {
+      s.lights.push_back({ ParseVec(item, "--lights"), 0.0 });
+    }
+    for (auto& l : s.lights)
+    {
+      l.intensity = 0.85 / double(s.lights.size());
+    }
+  }
+  else
+  {
+    // A headlight, and a key light above and to the left of the camera, which casts shadows.
+    double pos[3], fp[3], up[3];
+    vcam->GetPosition(pos);
+    vcam->GetFocalPoint(fp);
+    vcam->GetViewUp(up);
+    const art::Vec3 eye(pos), fwd = art::Vec3(fp) - eye, u = art::Normalize(art::Vec3(up));
+    const art::Vec3 right = art::Normalize(art::Cross(fwd, u));
+    const double d = art::Length(fwd);
+    s.lights.push_back({ eye, 0.35 });
+    s.lights.push_back({ eye + u * (0.6 * d) - right * (0.5 * d), 0.6 });
+  }
+  std::vector<std::array<float, 3>> colors;
+  if (vtkDataArray* sc = pd->GetPointData()->GetScalars())
+  {
+    if (sc->GetNumberOfComponents() >= 3 && sc->GetNumberOfTuples() == pd->GetNumberOfPoints())
+    {
+      const double scale = sc->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+      colors.resize(static_cast<size_t>(sc->GetNumberOfTuples()));
+      for (vtkIdType i = 0; i < sc->GetNumberOfTuples(); ++i)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          colors[i][k] = float(sc->GetComponent(i, k) * scale);
+        }
+      }
+    }
+  }
+  art::SurfaceTracer tracer(*acc, s);
+  if (!colors.empty())
+  {
+    tracer.SetPointColors(std::move(colors));
+  }
+  progress.Begin("tracing", double(view.width) * view.height);
+  art::Counters c;
+  t0 = std::chrono::steady_clock::now();
+  art::Image img = tracer.Render(cam, &progress, &c);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  progress.End();
+  bar.Finish();
+  img.CompositeOver({ view.background[0], view.background[1], view.background[2] });
+  art::WriteImage(img, view.output);
+
+  const double mrays = double(c.rays) / std::max(seconds, 1e-9) / 1e6;
+  const double mb = double(acc->MemoryBytes() + store->MemoryBytes()) / 1e6;
+  if (o.Flag("json"))
+  {
+    cli::Json j;
+    j.Set("input", input).Set("output", view.output).Set("width", view.width).Set("height", view.height);
+    j.Set("accelerator", acc->Name()).Set("triangles", static_cast<long long>(store->Size()));
+    j.Set("buildSeconds", buildSeconds).Set("renderSeconds", seconds).Set("rays", static_cast<long long>(c.rays));
+    j.Set("mraysPerSecond", mrays).Set("memoryMB", mb).Set("threads", art::GetThreadCount());
+    j.Set("voxelsPerRay", c.PerRay(c.voxelsVisited)).Set("trianglesPerRay", c.PerRay(c.trianglesTested));
+    j.Set("lights", static_cast<long long>(s.lights.size())).Set("opacity", s.opacity);
+    std::printf("%s\n", j.Str().c_str());
+    return cli::ExitOk;
+  }
+  std::printf("input        %s: %zu triangles\n", input.c_str(), store->Size());
+  std::printf("accelerator  %s: built in %.1f ms, %.1f MB (%.0f bytes/triangle with the store)\n", acc->Name().c_str(),
+    buildSeconds * 1e3, mb, mb * 1e6 / double(store->Size()));
+  std::printf("render       %d x %d, %zu lights%s, opacity %g: %.3f s, %llu rays (%.2f Mrays/s on %d threads)\n",
+    view.width, view.height, s.lights.size(), s.shadows ? " with shadows" : "", s.opacity, seconds,
+    static_cast<unsigned long long>(c.rays), mrays, art::GetThreadCount());
+  std::printf("work         %.1f voxels visited, %.1f triangles tested per ray\n", c.PerRay(c.voxelsVisited),
+    c.PerRay(c.trianglesTested));
+  std::printf("output       %s\n", view.output.c_str());
+  return cli::ExitOk;
+}
+
+cli::RendererRegistrar reg({ "surface", { art::DataKind::Surface }, Declare, Run });
+} // namespace
