@@ -93,7 +93,18 @@ void ExactIntegrator::Integrate(double s0, double s1, double length, RayAccum& a
   const auto& n = TF.Nodes();
   const int last = static_cast<int>(n.size()) - 1;
   double ca[3], ta, cb[3], tb, C[3], T;
-  TF.Evaluate(s0, ca, ta);
+  if (s0 == acc.lastS)
+  {
+    ca[0] = acc.lastRgb[0], ca[1] = acc.lastRgb[1], ca[2] = acc.lastRgb[2], ta = acc.lastTau;
+  }
+  else
+  {
+    TF.Evaluate(s0, ca, ta);
+  }
+  auto remember = [&] {
+    acc.lastS = s1;
+    acc.lastRgb[0] = ca[0], acc.lastRgb[1] = ca[1], acc.lastRgb[2] = ca[2], acc.lastTau = ta;
+  };
   auto piece = [&](double sb, double l) {
     TF.Evaluate(sb, cb, tb);
     IntegrateLinearPiece(ca, cb, ta, tb, l, C, T);
@@ -109,6 +120,7 @@ void ExactIntegrator::Integrate(double s0, double s1, double length, RayAccum& a
   if (ds == 0.0)
   {
     piece(s1, length);
+    remember();
     return;
   }
   // Control points strictly between s0 and s1, in the order the ray meets them.
@@ -136,6 +148,7 @@ void ExactIntegrator::Integrate(double s0, double s1, double length, RayAccum& a
     }
   }
   piece(s1, length * (s1 - sa) / ds);
+  remember();
 }
 
 void TrapezoidRule::Integrate(double s0, double s1, double length, RayAccum& acc) const

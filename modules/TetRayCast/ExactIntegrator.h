@@ -13,6 +13,8 @@
 #include "AdaptiveRTTetRayCastModule.h"
 #include "TransferFunction.h"
 
+#include <limits>
+
 namespace art
 {
 /// Front-to-back accumulation along one ray: premultiplied colour and transmittance.
@@ -21,6 +23,10 @@ struct RayAccum
   double rgb[3] = { 0, 0, 0 };
   double T = 1.0;
   double Alpha() const { return 1.0 - T; }
+  // The transfer function at the last segment's end: the next segment starts there.
+  double lastS = std::numeric_limits<double>::quiet_NaN();
+  double lastRgb[3] = { 0, 0, 0 };
+  double lastTau = 0;
 };
 
 /// One piece with linear colour and extinction: premultiplied colour C and transmittance T.

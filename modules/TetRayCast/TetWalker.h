@@ -38,9 +38,9 @@ public:
   {
     if (u < v)
     {
-      return Dot(D, Cross(P[u] - O, P[v] - O));
+      return Dot(Cross(D, P[u] - O), P[v] - O);
     }
-    return -Dot(D, Cross(P[v] - O, P[u] - O));
+    return -Dot(Cross(D, P[v] - O), P[u] - O);
   }
 
   /// Does the ray cross face f of tet t inward (sense -1) or outward (+1)? Fills the crossing.
@@ -73,18 +73,30 @@ public:
   {
     const std::size_t limit = M.NumberOfTets() + 8;
     int stuck = 0;
+    // Per local vertex: global id, q = p - o and D x q. Three of the four carry over from the
+    // previous tet (the shared face), so each step computes one new vertex; the side product of
+    // edge (u, v), u < v, is (D x q_u) . q_v, the same bits in every tet that has the edge.
+    int id[4];
+    Vec3 q[4], dq[4];
+    {
+      const auto& v = M.Tet(t);
+      for (int i = 0; i < 4; ++i)
+      {
+        id[i] = v[i];
+        q[i] = P[v[i]] - O;
+        dq[i] = Cross(D, q[i]);
+      }
+    }
     for (std::size_t n = 0; n < limit; ++n)
     {
       ++steps;
-      const auto& v = M.Tet(t);
-      // Oriented side products S[i][j] of the six edges, from local vertex i to j.
       double S[4][4];
       for (int i = 0; i < 4; ++i)
       {
         S[i][i] = 0;
         for (int j = i + 1; j < 4; ++j)
         {
-          S[i][j] = Side(v[i], v[j]);
+          S[i][j] = id[i] < id[j] ? Dot(dq[i], q[j]) : -Dot(dq[j], q[i]);
           S[j][i] = -S[i][j];
         }
       }
@@ -123,8 +135,14 @@ public:
       {
         ++nudges;
       }
-      Fill(v, best, w[0], w[1], w[2], out);
-      out.t = std::max(out.t, in.t);
+      {
+        const int* fv = TetMesh::FaceVertex[best];
+        out.w[best] = 0;
+        out.w[fv[0]] = w[0], out.w[fv[1]] = w[1], out.w[fv[2]] = w[2];
+        const Vec3 p = q[fv[0]] * w[0] + q[fv[1]] * w[1] + q[fv[2]] * w[2];
+        out.t = std::max(Dot(p, D) * InvDD, in.t);
+        out.s = F[id[fv[0]]] * w[0] + F[id[fv[1]]] * w[1] + F[id[fv[2]]] * w[2];
+      }
       if (!visit(t, in, out))
       {
         return;
@@ -135,23 +153,41 @@ public:
       {
         return;
       }
-      // Enter the neighbour through the shared face, carrying the crossing over.
-      const auto& nb = M.Neighbours(next);
-      entryFace = static_cast<int>(std::find(nb.begin(), nb.end(), t) - nb.begin());
-      in.t = out.t;
-      in.s = out.s;
+      // Enter the neighbour through the shared face: carry the shared vertices over; the one
+      // new vertex is the apex, opposite the entry face.
       const auto& nv = M.Tet(next);
+      int nid[4];
+      Vec3 nq[4], ndq[4];
+      double nw[4];
+      entryFace = 0;
       for (int i = 0; i < 4; ++i)
       {
-        in.w[i] = 0;
-        for (int j = 0; j < 4; ++j)
+        int j = 0;
+        while (j < 4 && id[j] != nv[i])
         {
-          if (nv[i] == v[j])
-          {
-            in.w[i] = out.w[j];
-          }
+          ++j;
+        }
+        nid[i] = nv[i];
+        if (j < 4)
+        {
+          nq[i] = q[j];
+          ndq[i] = dq[j];
+          nw[i] = out.w[j];
+        }
+        else
+        {
+          nq[i] = P[nv[i]] - O;
+          ndq[i] = Cross(D, nq[i]);
+          nw[i] = 0;
+          entryFace = i;
         }
       }
+      for (int i = 0; i < 4; ++i)
+      {
+        id[i] = nid[i], q[i] = nq[i], dq[i] = ndq[i], in.w[i] = nw[i];
+      }
+      in.t = out.t;
+      in.s = out.s;
       t = next;
     }
   }

@@ -56,6 +56,30 @@ TransferFunction::TransferFunction(std::vector<Node> nodes, double unitDistance)
       N.push_back(n);
     }
   }
+  BuildTable();
+}
+
+void TransferFunction::BuildTable()
+{
+  Table.clear();
+  if (N.size() < 2)
+  {
+    return;
+  }
+  const int K = 4096;
+  T0 = N.front().s;
+  TScale = K / (N.back().s - N.front().s);
+  Table.resize(K + 1);
+  int i = 0;
+  for (int k = 0; k <= K; ++k)
+  {
+    const double s = T0 + k / TScale;
+    while (i + 1 < static_cast<int>(N.size()) && N[i + 1].s <= s)
+    {
+      ++i;
+    }
+    Table[k] = i;
+  }
 }
 
 TransferFunction TransferFunction::FromVTK(vtkVolumeProperty* p)
@@ -223,8 +247,21 @@ int TransferFunction::Locate(double s) const
   {
     return -1;
   }
-  const auto it = std::upper_bound(N.begin(), N.end(), s, [](double v, const Node& n) { return v < n.s; });
-  return static_cast<int>(it - N.begin()) - 1;
+  const int last = static_cast<int>(N.size()) - 1;
+  if (s >= N.back().s)
+  {
+    return last;
+  }
+  int i = Table.empty() ? 0 : Table[static_cast<std::size_t>((s - T0) * TScale)];
+  while (i < last && N[i + 1].s <= s)
+  {
+    ++i;
+  }
+  while (i > 0 && N[i].s > s)
+  {
+    --i;
+  }
+  return i;
 }
 
 void TransferFunction::Evaluate(double s, double rgb[3], double& tau) const

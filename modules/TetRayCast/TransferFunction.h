@@ -58,8 +58,13 @@ public:
   double Alpha(double s) const;
 
 private:
+  void BuildTable();
+
   std::vector<Node> N;
   double Unit = 1.0;
+  // Locate in O(1): Table[k] is the interval holding the start of bucket k over [s_0, s_last].
+  std::vector<int> Table;
+  double T0 = 0, TScale = 0;
 };
 } // namespace art
 

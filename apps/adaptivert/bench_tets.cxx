@@ -1,0 +1,437 @@
+// adaptivert bench tets: our version of the seed paper's Table 1. The CT head reduced to a series
+// of tet budgets and at full resolution, rendered at 500 x 500 by our cell-by-cell caster (exact
+// rule with and without early termination, the paper's trapezoid rule), side by side in the same
+// run with VTK's vtkUnstructuredGridVolumeRayCastMapper (Bunyk) on the same meshes and
+// vtkFixedPointVolumeRayCastMapper on the voxels; every image scored (PSNR, SSIM, RMSE) against
+// the full-resolution voxel reference. The VTK mappers need a display (run under xvfb-run -a).
+#include "Bench.h"
+#include "Camera.h"
+#include "Command.h"
+#include "DataLoader.h"
+#include "Error.h"
+#include "ImageIO.h"
+#include "ImageMetrics.h"
+#include "Json.h"
+#include "ParallelTiles.h"
+#include "TetMesh.h"
+#include "TetRayCaster.h"
+#include "TransferFunction.h"
+#include "VoxelReferenceCaster.h"
+#ifdef ART_HAVE_Reduction
+#include "ReducerVTK.h"
+#include "TetReducer.h"
+#endif
+
+#include <vtkCamera.h>
+#include <vtkCellType.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFixedPointVolumeRayCastMapper.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkUnstructuredGridVolumeRayCastMapper.h>
+#include <vtkVolume.h>
+#include <vtkVolumeProperty.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <thread>
+
+namespace
+{
+struct Stats
+{
+  double median = 0, lo = 0, hi = 0;
+};
+
+Stats Timed(int runs, const std::function<double()>& once)
+{
+  once(); // warm-up
+  std::vector<double> v;
+  for (int i = 0; i < runs; ++i)
+  {
+    v.push_back(once());
+  }
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return { n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]), v.front(), v.back() };
+}
+
+std::string Shell(const std::string& cmd)
+{
+  std::string out;
+  if (FILE* p = popen(cmd.c_str(), "r"))
+  {
+    char buf[256];
+    while (std::fgets(buf, sizeof buf, p))
+    {
+      out += buf;
+    }
+    pclose(p);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == ' '))
+  {
+    out.pop_back();
+  }
+  return out;
+}
+
+struct Row
+{
+  std::string method, mesh;
+  long long tets = 0, vertices = 0;
+  Stats seconds;
+  art::ImageMetricsResult err;
+  double tetsPerRay = 0, nsPerTet = 0;
+};
+
+art::Image OverBlack(art::Image img)
+{
+  img.CompositeOver({ 0.f, 0.f, 0.f });
+  return img;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> ToGrid(const art::TetMesh& m)
+{
+  auto ug = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> s;
+  s->SetName("scalars");
+  for (std::size_t i = 0; i < m.NumberOfPoints(); ++i)
+  {
+    const auto& p = m.PointsArray()[i];
+    pts->InsertNextPoint(p.x, p.y, p.z);
+    s->InsertNextValue(m.Scalars()[i]);
+  }
+  ug->SetPoints(pts);
+  ug->GetPointData()->SetScalars(s);
+  ug->Allocate(static_cast<vtkIdType>(m.NumberOfTets()));
+  for (std::size_t t = 0; t < m.NumberOfTets(); ++t)
+  {
+    const auto& v = m.Tet(t);
+    vtkIdType ids[4] = { v[0], v[1], v[2], v[3] };
+    ug->InsertNextCell(VTK_TETRA, 4, ids);
+  }
+  return ug;
+}
+
+// Renders `mapper` in an offscreen window with the shared camera: median seconds and the image.
+Stats RenderVTK(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* prop, vtkCamera* cam, int w, int h, int runs,
+  art::Image& img)
+{
+  vtkNew<vtkVolume> vol;
+  vol->SetMapper(mapper);
+  vol->SetProperty(prop);
+  vtkNew<vtkRenderer> ren;
+  ren->SetBackground(0, 0, 0);
+  ren->AddVolume(vol);
+  ren->SetActiveCamera(cam);
+  vtkNew<vtkRenderWindow> win;
+  win->SetOffScreenRendering(1);
+  win->SetSize(w, h);
+  win->AddRenderer(ren);
+  const Stats s = Timed(runs, [&] {
+    vol->Modified(); // no cached image
+    const auto t0 = std::chrono::steady_clock::now();
+    win->Render();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  });
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(win);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkDataArray* px = grab->GetOutput()->GetPointData()->GetScalars();
+  img = art::Image(w, h);
+  for (int y = 0; y < h; ++y)
+  {
+    for (int x = 0; x < w; ++x)
+    {
+      const vtkIdType i = static_cast<vtkIdType>(h - 1 - y) * w + x;
+      img.Set(x, y, { float(px->GetComponent(i, 0) / 255.0), float(px->GetComponent(i, 1) / 255.0),
+                      float(px->GetComponent(i, 2) / 255.0), 1.f });
+    }
+  }
+  return s;
+}
+
+void Declare(cli::Options& o)
+{
+  o.Add("tets-input", 0, "FILE", "volume for `bench tets`", std::string(ART_DATA_DIR) + "/ct-head-128.mha");
+  o.Add("tets-levels", 0, "N,N..", "tet budgets of the reduction series", "10000,25000,50000,100000,250000");
+  o.Add("tets-size", 0, "WxH", "image size for `bench tets`", "500x500");
+  o.Add("tets-tf", 0, "NAME|FILE", "transfer function for `bench tets`", "ct-skin-bone");
+  o.Add("tets-bunyk-max", 0, "N", "largest mesh (tets) given to VTK's Bunyk mapper", "1000000");
+  o.Add("tets-no-vtk", 0, "", "skip VTK's mappers (they need a display)");
+}
+
+int Run(const cli::Options& o)
+{
+  const std::string in = o.Get("tets-input");
+  const std::string dir = o.Get("results");
+  const int runs = static_cast<int>(std::max(1LL, o.GetInt("runs")));
+  int W, H;
+  o.GetSize("tets-size", W, H);
+  std::filesystem::create_directories(dir);
+  const bool vtk = !o.Flag("tets-no-vtk") && std::getenv("DISPLAY");
+  if (!o.Flag("tets-no-vtk") && !vtk)
+  {
+    std::fprintf(stderr, "bench tets: no DISPLAY, VTK's mappers skipped (run under xvfb-run -a)\n");
+  }
+
+  auto volume = art::LoadVolume(in);
+  double range[2], b[6], spacing[3];
+  volume->GetPointData()->GetScalars()->GetRange(range);
+  volume->GetBounds(b);
+  volume->GetSpacing(spacing);
+  int dims[3];
+  volume->GetDimensions(dims);
+  const long long voxels = static_cast<long long>(dims[0]) * dims[1] * dims[2];
+  const std::string tfName = o.Get("tets-tf");
+  const art::TransferFunction tf = std::filesystem::exists(tfName) ? art::TransferFunction::FromFile(tfName)
+                                                                   : art::TransferFunction::Preset(tfName, range[0], range[1]);
+  vtkNew<vtkCamera> cam;
+  cam->SetPosition(0, -1, 0);
+  cam->SetFocalPoint(0, 0, 0);
+  cam->SetViewUp(0, 0, 1);
+  art::Camera::Frame(cam, art::Box3::FromBounds(b), 30, 10, 1.0);
+  const art::Camera camera = art::Camera::FromVTK(cam, W, H);
+  vtkNew<vtkVolumeProperty> prop;
+  tf.ToVTK(prop);
+
+  // The reference: voxels, trilinear, 2 samples per voxel, exact steps, no early termination.
+  std::fprintf(stderr, "reference (voxel caster) ...\n");
+  art::Image refRaw;
+  const auto refCaster = art::VoxelReferenceCaster::FromVTK(volume, tf);
+  const art::RenderStats refStats = refCaster.Render(camera, refRaw);
+  const art::Image ref = OverBlack(refRaw);
+  art::WriteImage(ref, dir + "/tets-reference.png");
+
+  // The meshes: the reduction series (nested, one run) and full resolution.
+  struct MeshEntry
+  {
+    std::string name;
+    std::unique_ptr<art::TetMesh> mesh;
+    double rms = -1;
+  };
+  std::vector<MeshEntry> meshes;
+#ifdef ART_HAVE_Reduction
+  {
+    std::vector<long long> levels;
+    std::stringstream ss(o.Get("tets-levels"));
+    std::string item;
+    while (std::getline(ss, item, ','))
+    {
+      levels.push_back(std::stoll(item));
+    }
+    std::sort(levels.begin(), levels.end());
+    if (!levels.empty())
+    {
+      std::fprintf(stderr, "reducing to %zu budgets ...\n", levels.size());
+      art::ReducerOptions ro;
+      ro.TargetTets = levels.back();
+      ro.Levels = levels;
+      for (const auto& r : art::TetReducer(ro).Run(art::VolumeFromImage(volume, in)))
+      {
+        std::vector<art::Vec3> p(r.NumberOfVertices());
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+          p[i] = art::Vec3(&r.Points[3 * i]);
+        }
+        std::vector<std::array<int, 4>> t(r.NumberOfTets());
+        for (std::size_t i = 0; i < t.size(); ++i)
+        {
+          t[i] = { r.Tets[4 * i], r.Tets[4 * i + 1], r.Tets[4 * i + 2], r.Tets[4 * i + 3] };
+        }
+        meshes.push_back({ "reduced " + std::to_string(r.NumberOfTets()),
+          std::make_unique<art::TetMesh>(std::move(p), r.Values, std::move(t)), r.Rms });
+      }
+    }
+  }
+#endif
+  std::fprintf(stderr, "full-resolution tets ...\n");
+  meshes.push_back({ "full resolution", std::make_unique<art::TetMesh>(art::TetMesh::FromImage(volume, in)), 0.0 });
+
+  std::vector<Row> rows;
+  auto report = [&](const Row& r) {
+    std::fprintf(stderr, "  %-22s %-18s %9lld tets  %8.3f s [%.3f-%.3f]  PSNR %6.2f dB  SSIM %.4f\n",
+      r.method.c_str(), r.mesh.c_str(), r.tets, r.seconds.median, r.seconds.lo, r.seconds.hi, r.err.psnr, r.err.ssim);
+    rows.push_back(r);
+  };
+  for (const auto& me : meshes)
+  {
+    const art::TetMesh& m = *me.mesh;
+    struct Variant
+    {
+      const char* name;
+      art::RenderSettings::Rule rule;
+      double ert;
+    };
+    for (const Variant& v : { Variant{ "ours exact, ERT 0.99", art::RenderSettings::Rule::Exact, 0.99 },
+           Variant{ "ours exact, no ERT", art::RenderSettings::Rule::Exact, 2.0 },
+           Variant{ "ours trapezoid, ERT 0.99", art::RenderSettings::Rule::Trapezoid, 0.99 } })
+    {
+      art::RenderSettings s;
+      s.tf = tf;
+      s.rule = v.rule;
+      s.earlyTermination = v.ert;
+      const art::TetRayCaster caster(m, s);
+      art::Image img;
+      art::RenderStats st;
+      Row r{ v.name, me.name, static_cast<long long>(m.NumberOfTets()), static_cast<long long>(m.NumberOfPoints()) };
+      r.seconds = Timed(runs, [&] {
+        st = caster.Render(camera, img);
+        return st.seconds;
+      });
+      r.err = art::CompareImages(OverBlack(img), ref);
+      r.tetsPerRay = st.counters.PerRay(st.counters.tetsCrossed);
+      r.nsPerTet = st.counters.tetsCrossed ? r.seconds.median * 1e9 * art::GetThreadCount() / st.counters.tetsCrossed : 0;
+      report(r);
+      if (v.ert < 1 && v.rule == art::RenderSettings::Rule::Exact)
+      {
+        std::string file = me.name;
+        std::replace(file.begin(), file.end(), ' ', '-');
+        art::WriteImage(OverBlack(img), dir + "/tets-ours-" + file + ".png");
+      }
+    }
+    if (vtk && static_cast<long long>(m.NumberOfTets()) <= o.GetInt("tets-bunyk-max"))
+    {
+      auto grid = ToGrid(m);
+      vtkNew<vtkUnstructuredGridVolumeRayCastMapper> bunyk;
+      bunyk->SetInputData(grid);
+      bunyk->SetAutoAdjustSampleDistances(0);
+      bunyk->SetImageSampleDistance(1.0f);
+      art::Image img;
+      Row r{ "VTK Bunyk (UG ray cast)", me.name, static_cast<long long>(m.NumberOfTets()),
+        static_cast<long long>(m.NumberOfPoints()) };
+      r.seconds = RenderVTK(bunyk, prop, cam, W, H, runs, img);
+      r.err = art::CompareImages(img, ref);
+      report(r);
+      std::string file = me.name;
+      std::replace(file.begin(), file.end(), ' ', '-');
+      art::WriteImage(img, dir + "/tets-bunyk-" + file + ".png");
+    }
+  }
+  if (vtk)
+  {
+    vtkNew<vtkFixedPointVolumeRayCastMapper> fp;
+    fp->SetInputData(volume);
+    fp->SetAutoAdjustSampleDistances(0);
+    fp->SetImageSampleDistance(1.0f);
+    fp->SetSampleDistance(0.5 * std::min(spacing[0], std::min(spacing[1], spacing[2])));
+    art::Image img;
+    Row r{ "VTK FixedPoint (voxels)", "voxels", 0, voxels };
+    r.seconds = RenderVTK(fp, prop, cam, W, H, runs, img);
+    r.err = art::CompareImages(img, ref);
+    report(r);
+    art::WriteImage(img, dir + "/tets-fixedpoint.png");
+  }
+
+  // JSON, markdown, chart.
+  const std::string src = std::string(ART_DATA_DIR) + "/..";
+  const std::string commit = Shell("git -C '" + src + "' rev-parse --short HEAD 2>/dev/null");
+  const std::string cpu = Shell("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'");
+  char date[64];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  std::vector<cli::Json> jr;
+  for (const Row& r : rows)
+  {
+    cli::Json j;
+    j.Set("method", r.method).Set("mesh", r.mesh).Set("tets", r.tets).Set("vertices", r.vertices)
+      .Set("seconds", r.seconds.median).Set("seconds_min", r.seconds.lo).Set("seconds_max", r.seconds.hi)
+      .Set("psnr", r.err.psnr).Set("ssim", r.err.ssim).Set("rmse", r.err.rmse)
+      .Set("tets_per_ray", r.tetsPerRay).Set("ns_per_tet_crossed_per_thread", r.nsPerTet);
+    jr.push_back(j);
+  }
+  cli::Json js;
+  js.Set("benchmark", "tets").Set("input", in).Set("voxels", voxels).Set("width", W).Set("height", H)
+    .Set("transfer_function", tfName).Set("machine", cpu)
+    .Set("hardware_threads", static_cast<long long>(std::thread::hardware_concurrency()))
+    .Set("threads", art::GetThreadCount()).Set("date", date).Set("commit", commit).Set("runs", runs)
+    .Set("reference_seconds", refStats.seconds).Set("rows", jr);
+  const std::string stem = dir + "/tets";
+  std::ofstream(stem + ".json") << js.Str() << "\n";
+
+  // Markdown with the ratios the issue asks for.
+  std::ostringstream md;
+  md << "# Tet ray casting: the CT head reduction series (" << W << " x " << H << ")\n\n"
+     << in << " (" << dims[0] << " x " << dims[1] << " x " << dims[2] << " voxels), transfer function " << tfName
+     << ", reference: voxel ray caster (trilinear, 2 samples/voxel, exact steps, no ERT; " << refStats.seconds
+     << " s). " << cpu << ", " << art::GetThreadCount() << " threads, commit " << commit << ", " << date
+     << ". Times: median of " << runs << " runs after a warm-up [min-max].\n\n"
+     << "| method | mesh | tets | vertices (% of voxels) | time s [min-max] | PSNR dB | SSIM | RMSE | tets/ray | ns/tet crossed/thread |\n"
+     << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  char line[512];
+  for (const Row& r : rows)
+  {
+    std::snprintf(line, sizeof line, "| %s | %s | %lld | %lld (%.2f%%) | %.3f [%.3f-%.3f] | %.2f | %.4f | %.5f | %.1f | %.0f |\n",
+      r.method.c_str(), r.mesh.c_str(), r.tets, r.vertices, 100.0 * r.vertices / voxels, r.seconds.median,
+      r.seconds.lo, r.seconds.hi, r.err.psnr, r.err.ssim, r.err.rmse, r.tetsPerRay, r.nsPerTet);
+    md << line;
+  }
+  md << "\n## Ratios\n\n";
+  const Row* fullOurs = nullptr;
+  for (const Row& r : rows)
+  {
+    if (r.mesh == "full resolution" && r.method == "ours exact, ERT 0.99")
+    {
+      fullOurs = &r;
+    }
+  }
+  for (const Row& r : rows)
+  {
+    if (r.method.rfind("VTK Bunyk", 0) == 0)
+    {
+      for (const Row& q : rows)
+      {
+        if (q.mesh == r.mesh && q.method == "ours exact, ERT 0.99")
+        {
+          std::snprintf(line, sizeof line,
+            "- %s: ours %.2fx Bunyk's frame rate (%.3f s vs %.3f s), PSNR %.2f vs %.2f dB\n", r.mesh.c_str(),
+            r.seconds.median / q.seconds.median, q.seconds.median, r.seconds.median, q.err.psnr, r.err.psnr);
+          md << line;
+        }
+      }
+    }
+    if (fullOurs && r.method == "ours exact, ERT 0.99" && r.mesh != "full resolution")
+    {
+      std::snprintf(line, sizeof line,
+        "- %s (%.2f%% of the vertices): %.2fx faster than our full-resolution render, %.0f%% of its time, PSNR %.2f dB\n",
+        r.mesh.c_str(), 100.0 * r.vertices / voxels, fullOurs->seconds.median / r.seconds.median,
+        100.0 * r.seconds.median / fullOurs->seconds.median, r.err.psnr);
+      md << line;
+    }
+  }
+  std::ofstream(stem + ".md") << md.str();
+  std::printf("%s", md.str().c_str());
+
+  const std::string script = src + "/tests/benchmarks/tets_chart.py";
+  const int rc = std::system(("/usr/bin/python3 '" + script + "' '" + stem + ".json' '" + stem + ".png'").c_str());
+  if (rc != 0)
+  {
+    throw art::Error("the chart script failed", script);
+  }
+  std::printf("\nresults      %s.json, %s.md, %s.png\n", stem.c_str(), stem.c_str(), stem.c_str());
+  return cli::ExitOk;
+}
+
+cli::BenchRegistrar reg({ "tets",
+  "the CT head reduction series cast cell by cell vs VTK's Bunyk and FixedPoint mappers (time vs PSNR)", Declare,
+  Run });
+} // namespace
