@@ -36,29 +36,29 @@ void IntegrateLinearPiece(const double c0[3], const double c1[3], double tau0, d
     T = 1.0;
     return;
   }
-  T = std::exp(-D);
   const double slope = std::max(tau0, tau1) * l; // largest E' on [0, 1]
   // E is quadratic, so the rule must be exact to degree ~2n in x: G4 below slope 0.01, G6 below
   // 0.5 and pieces of slope <= 0.5 above keep the quadrature error under 1e-12 relative.
   if (slope <= 0.5)
   {
-    // Thin: C = c0 (1 - J/l) + c1 (J/l - T), both factors small and positive, taken as
-    // integrals of expm1 so that nothing cancels.
+    // Thin: C = c0 a + c1 b with a = 1 - J/l = -int expm1(-E) and b = J/l - T = (1 - T) - a,
+    // both small and positive and neither formed by cancellation; one expm1 per node.
     const Rule& r = slope <= 1e-4 ? G3 : (slope <= 0.01 ? G4 : G6);
-    double a = 0.0, b = 0.0;
+    double a = 0.0;
     for (int i = 0; i < r.n; ++i)
     {
-      const double E = r.x[i] * (A + B * r.x[i]);
-      a -= r.w[i] * std::expm1(-E);
-      b += r.w[i] * std::expm1(D - E);
+      a -= r.w[i] * std::expm1(-r.x[i] * (A + B * r.x[i]));
     }
-    b *= T;
+    const double oneMinusT = -std::expm1(-D);
+    T = 1.0 - oneMinusT;
+    const double b = oneMinusT - a;
     for (int k = 0; k < 3; ++k)
     {
       C[k] = c0[k] * a + c1[k] * b;
     }
     return;
   }
+  T = std::exp(-D);
   // Thick: J/l = int_0^1 exp(-E) on sub-pieces of slope <= 0.5; stop once exp(-E) < 1e-20.
   const int m = static_cast<int>(std::ceil(2.0 * slope));
   const double h = 1.0 / m;
