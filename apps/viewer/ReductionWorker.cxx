@@ -1,0 +1,74 @@
+#include "ReductionWorker.h"
+
+#include "Error.h"
+
+#include <exception>
+
+namespace view
+{
+ReductionWorker::ReductionWorker(art::VoxelVolume volume, std::vector<long long> budgets)
+  : Volume(std::move(volume))
+  , Budgets(std::move(budgets))
+  , Prog([this](double f, const std::string&) { this->Fraction = f; })
+{
+}
+
+ReductionWorker::~ReductionWorker()
+{
+  Prog.Cancel();
+  if (Thread.joinable())
+  {
+    Thread.join();
+  }
+}
+
+void ReductionWorker::Start()
+{
+  Begin = std::chrono::steady_clock::now();
+  Thread = std::thread([this] { this->Run(); });
+}
+
+void ReductionWorker::Run()
+{
+  art::ReducerOptions opt;
+  opt.TargetTets = Budgets.back();
+  opt.Levels.assign(Budgets.begin(), Budgets.end() - 1);
+  std::string failure;
+  try
+  {
+    art::TetReducer(opt).Run(Volume, &Prog, [this](const art::ReducedMesh& m) {
+      std::lock_guard<std::mutex> g(Lock);
+      Ready.push_back(m);
+      ++Made;
+    });
+  }
+  catch (const std::exception& e)
+  {
+    failure = e.what();
+  }
+  std::lock_guard<std::mutex> g(Lock);
+  Failure = Prog.Cancelled() ? std::string() : failure;
+  Elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - Begin).count();
+  Done = true;
+}
+
+ReductionWorker::Status ReductionWorker::Poll() const
+{
+  std::lock_guard<std::mutex> g(Lock);
+  Status s;
+  s.Fraction = Done ? 1.0 : Fraction.load();
+  s.LevelsReady = Made;
+  s.Finished = Done;
+  s.Error = Failure;
+  s.Seconds = Done ? Elapsed : std::chrono::duration<double>(std::chrono::steady_clock::now() - Begin).count();
+  return s;
+}
+
+std::vector<art::ReducedMesh> ReductionWorker::TakeLevels()
+{
+  std::lock_guard<std::mutex> g(Lock);
+  std::vector<art::ReducedMesh> out;
+  out.swap(Ready);
+  return out;
+}
+} // namespace view

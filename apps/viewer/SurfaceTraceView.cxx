@@ -1,0 +1,150 @@
+#include "SurfaceTraceView.h"
+
+#include "Accelerator.h"
+#include "Camera.h"
+#include "Error.h"
+#include "SurfaceTracer.h"
+#include "TriangleStore.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkTexture.h>
+
+#include <algorithm>
+#include <chrono>
+
+namespace view
+{
+struct SurfaceTraceView::Internals
+{
+  std::shared_ptr<art::TriangleStore> Store;
+  std::unique_ptr<art::Accelerator> Acc;
+  std::vector<std::array<float, 3>> Colors;
+  vtkNew<vtkImageData> Frame;
+  vtkNew<vtkTexture> Texture;
+  vtkNew<vtkCallbackCommand> OnStart;
+  double Build = 0, Last = 0;
+};
+
+SurfaceTraceView::SurfaceTraceView(vtkPolyData* pd, const std::string& file)
+  : Impl(new Internals)
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  Impl->Store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd));
+  if (Impl->Store->Size() == 0)
+  {
+    throw art::Error("has no triangles to show", file);
+  }
+  Impl->Acc = art::MakeAccelerator(Impl->Store);
+  if (vtkDataArray* sc = pd->GetPointData()->GetScalars())
+  {
+    if (sc->GetNumberOfComponents() >= 3 && sc->GetNumberOfTuples() == pd->GetNumberOfPoints())
+    {
+      const double scale = sc->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+      Impl->Colors.resize(static_cast<size_t>(sc->GetNumberOfTuples()));
+      for (vtkIdType i = 0; i < sc->GetNumberOfTuples(); ++i)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          Impl->Colors[i][k] = static_cast<float>(sc->GetComponent(i, k) * scale);
+        }
+      }
+    }
+  }
+  Impl->Build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  Impl->Texture->SetInputData(Impl->Frame);
+  Impl->Texture->InterpolateOff();
+}
+
+SurfaceTraceView::~SurfaceTraceView() = default;
+
+void SurfaceTraceView::Attach(vtkRenderer* ren)
+{
+  ren->SetBackgroundTexture(Impl->Texture);
+  ren->TexturedBackgroundOn();
+  Impl->OnStart->SetClientData(this);
+  Impl->OnStart->SetCallback([](vtkObject* caller, unsigned long, void* self, void*) {
+    static_cast<SurfaceTraceView*>(self)->Trace(static_cast<vtkRenderer*>(caller));
+  });
+  // StartEvent fires before the renderer clears, i.e. before the background is drawn.
+  ren->AddObserver(vtkCommand::StartEvent, Impl->OnStart);
+}
+
+void SurfaceTraceView::Trace(vtkRenderer* ren)
+{
+  const int* size = ren->GetSize();
+  const int w = std::max(1, size[0] / Sample), h = std::max(1, size[1] / Sample);
+  vtkCamera* vcam = ren->GetActiveCamera();
+  // A headlight and a key light above-left of the camera (the CLI's default lights).
+  double pos[3], fp[3], up[3];
+  vcam->GetPosition(pos);
+  vcam->GetFocalPoint(fp);
+  vcam->GetViewUp(up);
+  const art::Vec3 eye(pos), fwd = art::Vec3(fp) - eye, u = art::Normalize(art::Vec3(up));
+  const art::Vec3 right = art::Normalize(art::Cross(fwd, u));
+  const double d = art::Length(fwd);
+  art::SurfaceTracerSettings s;
+  s.lights.push_back({ eye, 0.35 });
+  s.lights.push_back({ eye + u * (0.6 * d) - right * (0.5 * d), 0.6 });
+  art::SurfaceTracer tracer(*Impl->Acc, s);
+  if (!Impl->Colors.empty())
+  {
+    tracer.SetPointColors(Impl->Colors);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  art::Image img = tracer.Render(art::Camera::FromVTK(vcam, w, h));
+  Impl->Last = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  double bg[3];
+  ren->GetBackground(bg);
+  img.CompositeOver({ { float(bg[0]), float(bg[1]), float(bg[2]) } });
+
+  vtkImageData* f = Impl->Frame;
+  f->SetDimensions(w, h, 1);
+  f->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* dst = static_cast<unsigned char*>(f->GetScalarPointer());
+  for (int y = 0; y < h; ++y)
+  {
+    const float* row = img.Pixel(0, h - 1 - y); // VTK rows run bottom-up
+    for (int x = 0; x < w; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        dst[3 * (static_cast<size_t>(y) * w + x) + c] =
+          static_cast<unsigned char>(std::min(std::max(row[4 * x + c], 0.f), 1.f) * 255.f + 0.5f);
+      }
+    }
+  }
+  f->Modified();
+}
+
+art::Box3 SurfaceTraceView::Bounds() const
+{
+  return Impl->Store->Bounds();
+}
+
+std::size_t SurfaceTraceView::NumberOfTriangles() const
+{
+  return Impl->Store->Size();
+}
+
+double SurfaceTraceView::BuildSeconds() const
+{
+  return Impl->Build;
+}
+
+double SurfaceTraceView::LastTraceSeconds() const
+{
+  return Impl->Last;
+}
+
+std::string SurfaceTraceView::AcceleratorName() const
+{
+  return Impl->Acc->Name();
+}
+} // namespace view

@@ -1,0 +1,152 @@
+#include "ViewerOptions.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+
+namespace view
+{
+namespace
+{
+long long ParseCount(const std::string& s, const std::string& what)
+{
+  char* end = nullptr;
+  const long long v = std::strtoll(s.c_str(), &end, 10);
+  if (s.empty() || *end != '\0' || v < 1)
+  {
+    throw UsageError(what + " expects a positive whole number, got '" + s + "'");
+  }
+  return v;
+}
+} // namespace
+
+std::string UsageText()
+{
+  return "usage: adaptivert-view [options] FILE\n\n"
+         "Shows a volume (.mha .nii .vti .nrrd, DICOM folder), a tet mesh (.vtu .vtk) or a triangle\n"
+         "scene (.ply .obj .stl .vtp) in a window. Volumes are reduced to adaptive tets in the\n"
+         "background (nested levels from one run) and ray cast cell by cell (vtkTetRayCastMapper);\n"
+         "triangle scenes are ray traced through the TriangleGrid surface tracer.\n\n"
+         "options:\n"
+         "  --size WxH           window size in pixels (default 800x600)\n"
+         "  --tets N[,N...]      reduction levels for a volume (default 2000,10000,40000)\n"
+         "  --tf NAME            transfer-function preset: ct-skin-bone, ct-bone, grey-ramp, constant\n"
+         "  --script FILE        run scripted actions (one per line: key K | wait S | wait-reduction |\n"
+         "                       azimuth DEG | elevation DEG | zoom F | screenshot FILE)\n"
+         "  --screenshot OUT.png after the script (or, without one, the reduction) save the window, exit\n"
+         "  -h, --help           this text\n\n"
+         "keys: [ ] coarser/finer level, 1-9 pick a level, i iso-surface, + - iso-value,\n"
+         "      t early-termination threshold, x exact/trapezoid rule, m mesh edges, h help,\n"
+         "      s screenshot, r reset camera, q quit; mouse: trackball camera.\n\n"
+         "examples:\n"
+         "  adaptivert-view data/ct-head-128.mha\n"
+         "  adaptivert-view --tets 1000,5000,20000 --size 400x400 data/ct-head-128.mha\n"
+         "  xvfb-run -a adaptivert-view --script demo.txt --screenshot out.png data/ct-head-128.mha\n";
+}
+
+ViewerOptions ParseOptions(const std::vector<std::string>& args)
+{
+  ViewerOptions o;
+  for (std::size_t i = 0; i < args.size(); ++i)
+  {
+    std::string a = args[i], value;
+    const bool isOption = a.size() > 1 && a[0] == '-';
+    if (!isOption)
+    {
+      if (!o.File.empty())
+      {
+        throw UsageError("expects one FILE, got '" + o.File + "' and '" + a + "'");
+      }
+      o.File = a;
+      continue;
+    }
+    if (a == "-h" || a == "--help")
+    {
+      o.Help = true;
+      continue;
+    }
+    const auto eq = a.find('=');
+    bool inlineValue = false;
+    if (eq != std::string::npos)
+    {
+      value = a.substr(eq + 1);
+      a = a.substr(0, eq);
+      inlineValue = true;
+    }
+    static const char* withValue[] = { "--size", "--tets", "--tf", "--script", "--screenshot" };
+    if (std::find(std::begin(withValue), std::end(withValue), a) == std::end(withValue))
+    {
+      throw UsageError("unknown option '" + a + "'");
+    }
+    if (!inlineValue)
+    {
+      if (i + 1 >= args.size())
+      {
+        throw UsageError("option '" + a + "' needs a value");
+      }
+      value = args[++i];
+    }
+    if (a == "--size")
+    {
+      const auto x = value.find_first_of("xX");
+      if (x == std::string::npos)
+      {
+        throw UsageError("--size expects WxH, got '" + value + "'");
+      }
+      const long long w = ParseCount(value.substr(0, x), "--size"), h = ParseCount(value.substr(x + 1), "--size");
+      if (w < 64 || h < 64 || w > 8192 || h > 8192)
+      {
+        throw UsageError("--size must be within 64..8192 on each side, got '" + value + "'");
+      }
+      o.Width = static_cast<int>(w);
+      o.Height = static_cast<int>(h);
+    }
+    else if (a == "--tets")
+    {
+      o.Tets.clear();
+      std::stringstream ss(value);
+      std::string item;
+      while (std::getline(ss, item, ','))
+      {
+        const long long n = ParseCount(item, "--tets");
+        if (n < 6)
+        {
+          throw UsageError("--tets budgets must be at least 6, got " + item);
+        }
+        o.Tets.push_back(n);
+      }
+      if (o.Tets.empty())
+      {
+        throw UsageError("--tets expects N[,N...]");
+      }
+      std::sort(o.Tets.begin(), o.Tets.end());
+      o.Tets.erase(std::unique(o.Tets.begin(), o.Tets.end()), o.Tets.end());
+    }
+    else if (a == "--tf")
+    {
+      o.TransferFunction = value;
+    }
+    else if (a == "--script")
+    {
+      o.Script = value;
+    }
+    else
+    {
+      if (value.size() < 5 || value.substr(value.size() - 4) != ".png")
+      {
+        throw UsageError("--screenshot expects a .png file, got '" + value + "'");
+      }
+      o.Screenshot = value;
+    }
+  }
+  if (!o.Help && o.File.empty())
+  {
+    throw UsageError("needs a FILE to show");
+  }
+  if (o.Tets.empty())
+  {
+    o.Tets = { 2000, 10000, 40000 };
+  }
+  return o;
+}
+} // namespace view

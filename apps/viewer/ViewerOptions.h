@@ -1,0 +1,34 @@
+// ViewerOptions: the command line of adaptivert-view (FILE, --size, --tets, --tf, --script,
+// --screenshot, --help). Parsing never touches VTK, so usage errors come before any window.
+#ifndef art_ViewerOptions_h
+#define art_ViewerOptions_h
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace view
+{
+/// A mistake on the command line: main prints it in one line and exits 2.
+struct UsageError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct ViewerOptions
+{
+  std::string File;
+  int Width = 800, Height = 600;
+  std::vector<long long> Tets;   ///< nested reduction budgets, ascending (volumes)
+  std::string TransferFunction = "ct-skin-bone";
+  std::string Script;            ///< file of scripted actions (tests, demos)
+  std::string Screenshot;        ///< take one after the script (or the reduction) and exit
+  bool Help = false;
+};
+
+/// Throws UsageError for unknown options, missing values, bad sizes or budgets.
+ViewerOptions ParseOptions(const std::vector<std::string>& args);
+std::string UsageText();
+} // namespace view
+
+#endif

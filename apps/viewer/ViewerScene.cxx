@@ -1,0 +1,111 @@
+#include "ViewerScene.h"
+
+#include "DataLoader.h"
+#include "Error.h"
+#include "TetMesh.h"
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+
+#ifndef ART_HAVE_Reduction
+#include <vtkDataSetTriangleFilter.h>
+#include <vtkNew.h>
+#endif
+
+#include <cstdio>
+
+namespace view
+{
+std::string Grouped(long long n)
+{
+  std::string s = std::to_string(n), o;
+  for (std::size_t i = 0; i < s.size(); ++i)
+  {
+    o += s[i];
+    if ((s.size() - 1 - i) % 3 == 0 && i + 1 < s.size() && s[i] != '-')
+    {
+      o += ',';
+    }
+  }
+  return o;
+}
+
+void ViewerScene::AddLevel(vtkSmartPointer<vtkUnstructuredGrid> grid, long long tets, double rms)
+{
+  char buf[160];
+  if (rms >= 0)
+  {
+    std::snprintf(buf, sizeof buf, "%s tets, RMS error %.3g", Grouped(tets).c_str(), rms);
+  }
+  else
+  {
+    std::snprintf(buf, sizeof buf, "%s tets", Grouped(tets).c_str());
+  }
+  Levels.push_back(std::move(grid));
+  LevelLabels.push_back(buf);
+}
+
+ViewerScene LoadScene(const std::string& file, const std::string& tf)
+{
+  ViewerScene s;
+  art::DataKind kind;
+  vtkSmartPointer<vtkDataObject> data = art::Load(file, &kind);
+  if (kind == art::DataKind::Surface)
+  {
+#ifndef ART_HAVE_TriangleGrid
+    throw art::Error("triangle scenes need the TriangleGrid module, which is not in this build", file);
+#else
+    auto* pd = vtkPolyData::SafeDownCast(data);
+    s.Surface = std::make_unique<SurfaceTraceView>(pd, file);
+    s.Bounds = s.Surface->Bounds();
+    char buf[200];
+    const std::string acc = s.Surface->AcceleratorName();
+    std::snprintf(buf, sizeof buf, "%s triangles, SurfaceTracer, %s",
+      Grouped(static_cast<long long>(s.Surface->NumberOfTriangles())).c_str(), acc.substr(0, acc.find(' ')).c_str());
+    s.Note = buf;
+    return s;
+#endif
+  }
+  if (kind == art::DataKind::Volume)
+  {
+    s.Image = vtkImageData::SafeDownCast(data);
+    vtkDataArray* sc = s.Image->GetPointData()->GetScalars();
+    if (!sc)
+    {
+      throw art::Error("volume has no scalars", file);
+    }
+    if (sc->GetNumberOfComponents() != 1)
+    {
+      throw art::Error("volume has " + std::to_string(sc->GetNumberOfComponents()) + " components, expected 1", file);
+    }
+    sc->GetRange(s.Range);
+    double b[6];
+    s.Image->GetBounds(b);
+    s.Bounds = art::Box3::FromBounds(b);
+#ifndef ART_HAVE_Reduction
+    // Without the Reduction module the only tets are the full-resolution ones.
+    vtkNew<vtkDataSetTriangleFilter> tri;
+    tri->SetInputData(s.Image);
+    tri->Update();
+    vtkSmartPointer<vtkUnstructuredGrid> full = tri->GetOutput();
+    s.AddLevel(full, full->GetNumberOfCells(), -1);
+#endif
+  }
+  else
+  {
+    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(data);
+    std::string note;
+    const art::TetMesh mesh = art::TetMesh::FromVTK(grid, {}, &note, file); // checks scalars and cells
+    s.Range[0] = mesh.ScalarRange(0);
+    s.Range[1] = mesh.ScalarRange(1);
+    s.Bounds = mesh.Bounds();
+    s.AddLevel(grid, static_cast<long long>(mesh.NumberOfTets()), -1);
+    s.Note = note;
+  }
+  s.Transfer = art::TransferFunction::Preset(tf, s.Range[0], s.Range[1]);
+  return s;
+}
+} // namespace view

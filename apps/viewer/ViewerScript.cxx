@@ -1,0 +1,94 @@
+#include "ViewerScript.h"
+
+#include "Error.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace view
+{
+std::vector<ScriptAction> ReadScript(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    throw art::Error("cannot open script", path);
+  }
+  std::vector<ScriptAction> out;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n)
+  {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos)
+    {
+      line.erase(hash);
+    }
+    std::istringstream ss(line);
+    std::string word;
+    if (!(ss >> word))
+    {
+      continue;
+    }
+    auto fail = [&](const std::string& what) {
+      throw art::Error("line " + std::to_string(n) + ": " + what, path);
+    };
+    ScriptAction a;
+    a.Line = n;
+    std::string rest;
+    if (word == "key")
+    {
+      a.What = ScriptAction::Kind::Key;
+      if (!(ss >> a.Text) || a.Text.size() != 1)
+      {
+        fail("'key' expects one character");
+      }
+    }
+    else if (word == "wait-reduction")
+    {
+      a.What = ScriptAction::Kind::WaitReduction;
+    }
+    else if (word == "screenshot")
+    {
+      a.What = ScriptAction::Kind::Screenshot;
+      if (!(ss >> a.Text))
+      {
+        fail("'screenshot' expects a file");
+      }
+    }
+    else
+    {
+      static const std::pair<const char*, ScriptAction::Kind> numeric[] = { { "wait", ScriptAction::Kind::Wait },
+        { "azimuth", ScriptAction::Kind::Azimuth }, { "elevation", ScriptAction::Kind::Elevation },
+        { "roll", ScriptAction::Kind::Roll }, { "zoom", ScriptAction::Kind::Zoom } };
+      bool known = false;
+      for (const auto& k : numeric)
+      {
+        if (word == k.first)
+        {
+          a.What = k.second;
+          known = true;
+        }
+      }
+      if (!known)
+      {
+        fail("unknown action '" + word + "'");
+      }
+      if (!(ss >> a.Value) || !std::isfinite(a.Value))
+      {
+        fail("'" + word + "' expects a number");
+      }
+      if ((a.What == ScriptAction::Kind::Wait && a.Value < 0) || (a.What == ScriptAction::Kind::Zoom && a.Value <= 0))
+      {
+        fail("'" + word + "' expects a positive number");
+      }
+    }
+    if (ss >> rest)
+    {
+      fail("unexpected '" + rest + "'");
+    }
+    out.push_back(a);
+  }
+  return out;
+}
+} // namespace view

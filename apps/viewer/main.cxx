@@ -1,0 +1,43 @@
+// adaptivert-view: the interactive viewer. `adaptivert-view [options] FILE`.
+// Errors: one line "adaptivert-view: <file>: <what>" on stderr, exit 1; usage errors exit 2.
+#include "Error.h"
+#include "ViewerApp.h"
+#include "ViewerOptions.h"
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+int main(int argc, char** argv)
+{
+  view::ViewerOptions opt;
+  try
+  {
+    opt = view::ParseOptions(std::vector<std::string>(argv + 1, argv + argc));
+  }
+  catch (const view::UsageError& e)
+  {
+    std::fprintf(stderr, "adaptivert-view: %s (try 'adaptivert-view --help')\n", e.what());
+    return 2;
+  }
+  if (opt.Help)
+  {
+    std::printf("%s", view::UsageText().c_str());
+    return 0;
+  }
+  try
+  {
+    view::ViewerApp app(opt);
+    return app.Run();
+  }
+  catch (const art::Error& e)
+  {
+    std::fprintf(stderr, "adaptivert-view: %s\n", e.what());
+  }
+  catch (const std::exception& e)
+  {
+    std::fprintf(stderr, "adaptivert-view: %s: %s\n", opt.File.c_str(), e.what());
+  }
+  return 1;
+}
