@@ -178,6 +178,10 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bo
   field("target_tets", static_cast<double>(m.TargetTets));
   field("target_error", m.TargetError);
   field("target_reached", m.TargetReached ? 1.0 : 0.0);
+  const QualityReport q = MeasureQuality(m.Points.data(), nv, m.Tets.data(), nt);
+  field("min_dihedral_degrees", q.MinDihedralDegrees);
+  field("min_radius_ratio", q.MinRadiusRatio);
+  field("mean_radius_ratio", q.MeanRadiusRatio);
   field("scalar_range_min", m.Range[0]);
   field("scalar_range_max", m.Range[1]);
   return grid;

@@ -29,12 +29,33 @@ vtkSmartPointer<vtkUnstructuredGrid> TetrahedralizeVolume(vtkImageData* image)
 
 vtkSmartPointer<vtkUnstructuredGrid> QuadricDecimate(vtkUnstructuredGrid* grid, long long tets, const char* scalars)
 {
-  auto dec = vtkSmartPointer<vtkUnstructuredGridQuadricDecimation>::New();
-  dec->SetInputData(grid);
-  dec->SetNumberOfTetsOutput(static_cast<int>(tets));
-  dec->SetScalarsName(scalars);
-  dec->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> out = dec->GetOutput();
+  // Its randomized collapses stall above the target on big inputs: run it again on its own
+  // output while that still helps (at most 8 passes).
+  vtkSmartPointer<vtkUnstructuredGrid> out = grid;
+  for (int pass = 0; pass < 8 && out->GetNumberOfCells() > tets * 21 / 20; ++pass)
+  {
+    const vtkIdType before = out->GetNumberOfCells();
+    auto dec = vtkSmartPointer<vtkUnstructuredGridQuadricDecimation>::New();
+    dec->SetInputData(out);
+    dec->SetNumberOfTetsOutput(static_cast<int>(tets));
+    dec->SetScalarsName(scalars);
+    dec->Update();
+    vtkSmartPointer<vtkUnstructuredGrid> next = dec->GetOutput();
+    if (next->GetNumberOfCells() == 0)
+    {
+      throw Error(std::string("quadric decimation failed (no scalars named '") + scalars + "'?)");
+    }
+    // It writes its field as "scalars": give it back the input's name.
+    if (vtkDataArray* a = next->GetPointData()->GetScalars())
+    {
+      a->SetName(scalars);
+    }
+    out = next;
+    if (out->GetNumberOfCells() >= before * 99 / 100)
+    {
+      break;
+    }
+  }
   return out;
 }
 
@@ -53,7 +74,7 @@ BaselineError ProbeError(vtkImageData* image, vtkUnstructuredGrid* grid, const c
     throw Error(std::string("probing found no array '") + scalars + "'");
   }
   BaselineError e;
-  double sse = 0;
+  double sse = 0, covered = 0;
   const vtkIdType n = image->GetNumberOfPoints();
   for (vtkIdType i = 0; i < n; ++i)
   {
@@ -61,9 +82,11 @@ BaselineError ProbeError(vtkImageData* image, vtkUnstructuredGrid* grid, const c
     const double d = orig->GetTuple1(i) - (ok ? fit->GetTuple1(i) : 0.0);
     e.Uncovered += ok ? 0 : 1;
     sse += d * d;
+    covered += ok ? d * d : 0.0;
     e.Max = std::max(e.Max, std::fabs(d));
   }
   e.Rms = std::sqrt(sse / static_cast<double>(n));
+  e.CoveredRms = n > e.Uncovered ? std::sqrt(covered / static_cast<double>(n - e.Uncovered)) : 0.0;
   e.Vertices = grid->GetNumberOfPoints();
   e.Tets = grid->GetNumberOfCells();
   return e;
@@ -78,11 +101,23 @@ BaselineError UniformDownsampleError(const VoxelVolume& v, long long vertices)
     L[a] = (d[a] - 1) * std::fabs(v.Spacing[a]);
   }
   // n_a nodes per axis with n0 n1 n2 ~ vertices and node spacing about equal in world units.
-  const double h = std::cbrt(L[0] * L[1] * L[2] / std::max(1.0, double(vertices)));
-  int n[3];
-  for (int a = 0; a < 3; ++a)
+  // Scan the node spacing for the node count closest to `vertices`.
+  int n[3] = { 2, 2, 2 };
+  long long best = -1;
+  for (double h = std::cbrt(L[0] * L[1] * L[2] / std::max(1.0, double(vertices))) * 0.5;
+       h < std::max(L[0], std::max(L[1], L[2])) * 2; h *= 1.01)
   {
-    n[a] = std::max(2, std::min(d[a], static_cast<int>(std::lround(L[a] / h)) + 1));
+    int m[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      m[a] = std::max(2, std::min(d[a], static_cast<int>(std::lround(L[a] / h)) + 1));
+    }
+    const long long c = static_cast<long long>(m[0]) * m[1] * m[2];
+    if (best < 0 || std::llabs(c - vertices) < std::llabs(best - vertices))
+    {
+      best = c;
+      std::copy(m, m + 3, n);
+    }
   }
   auto voxel = [&](long long i, long long j, long long k) { return v.Value(i + d[0] * (j + d[1] * k)); };
   auto trilinear = [](auto&& at, const int* dims, double x, double y, double z) {

@@ -19,6 +19,7 @@ struct BaselineError
 {
   double Rms = 0, Max = 0;   ///< over every voxel centre, data units
   long long Uncovered = 0;   ///< voxel centres outside the grid (counted with the fit value 0)
+  double CoveredRms = 0;     ///< RMS over the voxel centres inside the grid only
   long long Vertices = 0, Tets = 0;
 };
 

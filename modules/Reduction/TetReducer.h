@@ -2,12 +2,14 @@
 // Luerig & Ertl, Vis '97): coarse Kuhn mesh -> L2 fit -> per-tet error -> bisect the worst ->
 // re-fit warm-started -> ... until a tet budget or an error bound; nested levels on the way.
 //
-// Refinement choice: newest-vertex bisection (BisectionMesh) rather than red-green, TetGen or
-// CGAL. Measured per tet it gives the same error as the others for a given count (the fit, not
-// the shapes, decides it), but it is exact on an integer lattice (each voxel centre in exactly
-// one tet, deterministic), conforming with a short closure, adds one tet per bisection (so a
-// budget is met to a few tets), keeps shapes in a few similarity classes (no slivers), and the
-// old fit is exactly representable on the refined mesh, which makes the warm start exact.
+// Refinement choice: newest-vertex bisection (BisectionMesh), not red-green, TetGen or CGAL.
+// It is exact on an integer lattice (each voxel centre in exactly one tet; deterministic), stays
+// conforming with a short closure, adds one tet per bisection (a budget is met to a few tets),
+// keeps shapes in a few similarity classes (min dihedral 42.6 deg on the full CT at 200k tets),
+// and the old fit is exactly representable on the refined mesh, so the warm start is exact.
+// Measured error per tet (bench reduction, CT head at the paper's levels): RMS 0.4-0.6 x that of
+// VTK's quadric decimation at equal tets and 0.86-0.93 x uniform downsampling at equal vertices;
+// TetGen/CGAL refinement were not built (sizing-field Delaunay refinement has no exact nesting).
 #ifndef art_TetReducer_h
 #define art_TetReducer_h
 
