@@ -48,6 +48,14 @@ std::vector<ScriptAction> ReadScript(const std::string& path)
     {
       a.What = ScriptAction::Kind::WaitReduction;
     }
+    else if (word == "drag")
+    {
+      a.What = ScriptAction::Kind::Drag;
+      if (!(ss >> a.Value >> a.Value2) || std::abs(a.Value) > 1e4 || std::abs(a.Value2) > 1e4)
+      {
+        fail("'drag' expects DX DY in pixels");
+      }
+    }
     else if (word == "screenshot")
     {
       a.What = ScriptAction::Kind::Screenshot;

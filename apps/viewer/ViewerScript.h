@@ -3,6 +3,7 @@
 //   wait S           wait S seconds
 //   wait-reduction   wait until the background reduction has finished
 //   azimuth DEG | elevation DEG | roll DEG | zoom F     move the camera
+//   drag DX DY       drag with the left mouse button from the window's centre (the trackball)
 //   screenshot FILE  save the window as a PNG
 // The viewer steps it from its repeating timer, so the window stays live while it runs.
 #ifndef art_ViewerScript_h
@@ -24,11 +25,13 @@ struct ScriptAction
     Elevation,
     Roll,
     Zoom,
+    Drag,
     Screenshot
   };
   Kind What = Kind::Key;
   std::string Text; ///< the key, or the screenshot file
-  double Value = 0; ///< seconds, degrees or zoom factor
+  double Value = 0; ///< seconds, degrees, zoom factor or DX
+  double Value2 = 0; ///< DY of a drag
   int Line = 0;
 };
 
