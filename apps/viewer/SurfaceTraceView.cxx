@@ -1,10 +1,14 @@
 #include "SurfaceTraceView.h"
 
+#include "Error.h"
+
+#ifdef ART_HAVE_TriangleGrid
 #include "Accelerator.h"
 #include "Camera.h"
-#include "Error.h"
 #include "SurfaceTracer.h"
 #include "TriangleStore.h"
+
+#endif
 
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
@@ -19,6 +23,7 @@
 #include <algorithm>
 #include <chrono>
 
+#ifdef ART_HAVE_TriangleGrid
 namespace view
 {
 struct SurfaceTraceView::Internals
@@ -148,3 +153,41 @@ std::string SurfaceTraceView::AcceleratorName() const
   return Impl->Acc->Name();
 }
 } // namespace view
+
+#else
+// Built without AdaptiveRT::TriangleGrid: triangle scenes are refused with one clear line.
+namespace view
+{
+struct SurfaceTraceView::Internals
+{
+};
+
+SurfaceTraceView::SurfaceTraceView(vtkPolyData*, const std::string& file)
+{
+  throw art::Error("triangle scenes need the TriangleGrid module, which is not in this build", file);
+}
+SurfaceTraceView::~SurfaceTraceView() = default;
+void SurfaceTraceView::Attach(vtkRenderer*) {}
+void SurfaceTraceView::Trace(vtkRenderer*) {}
+art::Box3 SurfaceTraceView::Bounds() const
+{
+  return {};
+}
+std::size_t SurfaceTraceView::NumberOfTriangles() const
+{
+  return 0;
+}
+double SurfaceTraceView::BuildSeconds() const
+{
+  return 0;
+}
+double SurfaceTraceView::LastTraceSeconds() const
+{
+  return 0;
+}
+std::string SurfaceTraceView::AcceleratorName() const
+{
+  return {};
+}
+} // namespace view
+#endif

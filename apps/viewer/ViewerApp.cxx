@@ -16,6 +16,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -129,14 +130,17 @@ void ViewerApp::Internals::SetupWindow()
   TimerCb->SetCallback([](vtkObject*, unsigned long, void* self, void*) { static_cast<Internals*>(self)->OnTimer(); });
   Interactor->Initialize();
   Interactor->AddObserver(vtkCommand::TimerEvent, TimerCb);
-  // Half the rays per side while the camera moves keeps the trackball smooth.
+  // Fewer rays while the camera moves keeps the trackball smooth; full resolution when it stops.
   StartInteractCb->SetClientData(this);
   StartInteractCb->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
     auto* I = static_cast<Internals*>(self);
-    I->Mapper->SetImageSampleDistance(2);
+    // Aim at ~12 frames a second from the last full-resolution frame's time (2x to 6x fewer rays per side).
+    const double full = I->Scene.Surface ? I->Scene.Surface->LastTraceSeconds() : I->Mapper->GetLastRenderTime();
+    const int d = std::max(2, std::min(6, static_cast<int>(std::ceil(std::sqrt(full / 0.08)))));
+    I->Mapper->SetImageSampleDistance(static_cast<float>(d));
     if (I->Scene.Surface)
     {
-      I->Scene.Surface->SetSampleDistance(2);
+      I->Scene.Surface->SetSampleDistance(d);
     }
   });
   EndInteractCb->SetClientData(this);

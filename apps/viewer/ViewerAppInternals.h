@@ -46,6 +46,8 @@ struct ViewerApp::Internals
   int LastPercent = -1;
   double LastProgressRender = -1;
   ViewerState State;
+  std::string ReductionNote; ///< "reduced in 3.2 s", for the window title
+  double TitleFrameSeconds = -1;
 
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkRenderer> Ren, Overlay;
@@ -76,6 +78,7 @@ struct ViewerApp::Internals
   void OnKey(char k);
   void OnTimer();
   void PollReduction();
+  void UpdateTitle();
   void StepScript();
   void ShowLevel(int i);
   void ApplySettings();

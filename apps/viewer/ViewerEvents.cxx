@@ -126,9 +126,10 @@ void ViewerApp::Internals::PollReduction()
     ReductionFinished = true;
     bar = st.Error.empty() ? "reduced: " + std::to_string(Scene.Levels.size()) + " nested levels from one run"
                            : "reduction failed: " + st.Error;
-    char title[256];
-    std::snprintf(title, sizeof title, "adaptivert-view - %s - reduced in %.2f s", Opt.File.c_str(), st.Seconds);
-    Window->SetWindowName(title);
+    char note[64];
+    std::snprintf(note, sizeof note, " - reduced in %.2f s", st.Seconds);
+    ReductionNote = note;
+    TitleFrameSeconds = -1;
     if (!st.Error.empty())
     {
       std::fprintf(stderr, "adaptivert-view: %s: reduction failed: %s\n", Opt.File.c_str(), st.Error.c_str());
@@ -224,6 +225,21 @@ void ViewerApp::Internals::StepScript()
   }
 }
 
+void ViewerApp::Internals::UpdateTitle()
+{
+  // Timings go to the title bar, not into the picture: screenshots stay deterministic.
+  const double frame = Scene.Surface ? Scene.Surface->LastTraceSeconds() : Mapper->GetLastRenderTime();
+  if (frame == TitleFrameSeconds)
+  {
+    return;
+  }
+  TitleFrameSeconds = frame;
+  char title[512];
+  std::snprintf(title, sizeof title, "adaptivert-view - %s - %.1f ms/frame%s", Opt.File.c_str(), frame * 1e3,
+    ReductionNote.c_str());
+  Window->SetWindowName(title);
+}
+
 void ViewerApp::Internals::OnTimer()
 {
   if (Quitting)
@@ -237,5 +253,6 @@ void ViewerApp::Internals::OnTimer()
     Dirty = false;
     Window->Render();
   }
+  UpdateTitle();
 }
 } // namespace view

@@ -1,5 +1,7 @@
 #include "ViewerOptions.h"
 
+#include "TransferFunction.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <sstream>
@@ -30,7 +32,8 @@ std::string UsageText()
          "options:\n"
          "  --size WxH           window size in pixels (default 800x600)\n"
          "  --tets N[,N...]      reduction levels for a volume (default 2000,10000,40000)\n"
-         "  --tf NAME            transfer-function preset: ct-skin-bone, ct-bone, grey-ramp, constant\n"
+         "  --tf NAME|FILE       transfer function: ct-skin-bone, ct-bone, grey-ramp, constant, or a\n"
+         "                       file of 'scalar r g b opacity' lines (default ct-skin-bone)\n"
          "  --script FILE        run scripted actions (one per line: key K | wait S | wait-reduction |\n"
          "                       azimuth DEG | elevation DEG | zoom F | screenshot FILE)\n"
          "  --screenshot OUT.png after the script (or, without one, the reduction) save the window, exit\n"
@@ -124,6 +127,18 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
     }
     else if (a == "--tf")
     {
+      // A name is a preset; anything that looks like a path is a node file (read at load time).
+      const auto names = art::TransferFunction::PresetNames();
+      if (value.find_first_of("./") == std::string::npos &&
+        std::find(names.begin(), names.end(), value) == names.end())
+      {
+        std::string all;
+        for (const auto& n : names)
+        {
+          all += (all.empty() ? "" : ", ") + n;
+        }
+        throw UsageError("--tf: unknown preset '" + value + "' (known: " + all + ", or a file)");
+      }
       o.TransferFunction = value;
     }
     else if (a == "--script")

@@ -55,9 +55,6 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf)
   vtkSmartPointer<vtkDataObject> data = art::Load(file, &kind);
   if (kind == art::DataKind::Surface)
   {
-#ifndef ART_HAVE_TriangleGrid
-    throw art::Error("triangle scenes need the TriangleGrid module, which is not in this build", file);
-#else
     auto* pd = vtkPolyData::SafeDownCast(data);
     s.Surface = std::make_unique<SurfaceTraceView>(pd, file);
     s.Bounds = s.Surface->Bounds();
@@ -67,7 +64,6 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf)
       Grouped(static_cast<long long>(s.Surface->NumberOfTriangles())).c_str(), acc.substr(0, acc.find(' ')).c_str());
     s.Note = buf;
     return s;
-#endif
   }
   if (kind == art::DataKind::Volume)
   {
@@ -105,7 +101,8 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf)
     s.AddLevel(grid, static_cast<long long>(mesh.NumberOfTets()), -1);
     s.Note = note;
   }
-  s.Transfer = art::TransferFunction::Preset(tf, s.Range[0], s.Range[1]);
+  s.Transfer = tf.find_first_of("./") != std::string::npos ? art::TransferFunction::FromFile(tf)
+                                                           : art::TransferFunction::Preset(tf, s.Range[0], s.Range[1]);
   return s;
 }
 } // namespace view
