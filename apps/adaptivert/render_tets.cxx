@@ -236,7 +236,8 @@ int Run(const cli::Options& o, const std::string& input)
         rst = rc.Render(cam, ref, &progress);
         haveRef = true;
       }
-      else if (settings.rule == art::RenderSettings::Rule::Trapezoid || settings.earlyTermination < 1)
+      else if (settings.mode == art::RenderSettings::Mode::Composite &&
+        (settings.rule == art::RenderSettings::Rule::Trapezoid || settings.earlyTermination < 1))
       {
         art::RenderSettings exact = settings; // a mesh's reference: the exact rule on that mesh
         exact.rule = art::RenderSettings::Rule::Exact;
@@ -266,7 +267,8 @@ int Run(const cli::Options& o, const std::string& input)
       .Set("vertices", static_cast<long long>(mesh.NumberOfPoints()));
     j.Set("buildSeconds", buildSeconds).Set("renderSeconds", st.seconds).Set("mraysPerSecond", mrays);
     j.Set("tetsCrossed", static_cast<long long>(c.tetsCrossed)).Set("tetsPerRay", c.PerRay(c.tetsCrossed));
-    j.Set("nsPerTetCrossed", nsPerTet).Set("entrySearches", static_cast<long long>(c.entrySearches));
+    j.Set("nsPerTetCrossed", nsPerTet).Set("entrySearches", static_cast<long long>(c.entrySearches))
+      .Set("fallbackExits", static_cast<long long>(st.nudges));
     if (haveRef)
     {
       j.Set("referenceSeconds", rst.seconds).Set("psnr", m.psnr).Set("ssim", m.ssim).Set("rmse", m.rmse);

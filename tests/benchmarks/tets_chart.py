@@ -14,7 +14,7 @@ for r in data["rows"]:
 fig, ax = plt.subplots(figsize=(8, 5.5))
 markers = "osD^vP*X"
 for i, (name, rows) in enumerate(methods.items()):
-    rows = sorted(rows, key=lambda r: r["seconds"])
+    rows = sorted(rows, key=lambda r: (r["vertices"], r["tets"]))  # along the reduction series
     xs = [r["seconds"] for r in rows]
     ys = [min(r["psnr"], 80) for r in rows]
     ax.plot(xs, ys, marker=markers[i % len(markers)], label=name)
