@@ -117,35 +117,46 @@ protected:
     }
     double tEnter = t0;
     const Cell* cells = Cells.data() + G.firstCell;
+    // The linear cell index moves by a per-axis stride; empty cells cost one load and a compare.
+    const long long stride[3] = { step[0], static_cast<long long>(step[1]) * G.n[0],
+      static_cast<long long>(step[2]) * G.n[0] * G.n[1] };
+    long long idx = (static_cast<long long>(i[2]) * G.n[1] + i[1]) * G.n[0] + i[0];
+    std::uint64_t visited = 0;
+    bool stop = false;
     for (;;)
     {
-      ++c.voxelsVisited;
-      const Cell& cell = cells[(i[2] * G.n[1] + i[1]) * G.n[0] + i[0]];
+      ++visited;
+      const Cell& cell = cells[idx];
       const int a = tNext[0] < tNext[1] ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2);
       const double tExit = std::min(tNext[a], t1);
       if (cell.count == Child)
       {
         if (WalkNode(cell.begin, p, tEnter, tExit, delta, visit, c))
         {
-          return true;
+          stop = true;
+          break;
         }
       }
       else if (cell.count != 0 && visit(Ids.data() + cell.begin, cell.count, tExit))
       {
-        return true;
+        stop = true;
+        break;
       }
       if (!(tNext[a] < t1))
       {
-        return false;
+        break;
       }
       i[a] += step[a];
       if (i[a] < 0 || i[a] >= G.n[a])
       {
-        return false;
+        break;
       }
+      idx += stride[a];
       tEnter = tNext[a];
       tNext[a] += tDelta[a];
     }
+    c.voxelsVisited += visited;
+    return stop;
   }
 
   std::vector<Node> Nodes;

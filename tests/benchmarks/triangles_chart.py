@@ -1,0 +1,63 @@
+"""Chart of `adaptivert bench triangles`: closest-hit Mrays/s per scene and engine (1 and 2
+threads, log scale), and the paper's R/O tables as throughput against memory.
+Usage: /usr/bin/python3 triangles_chart.py triangles.json triangles.png"""
+import json
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+data = json.load(open(sys.argv[1]))
+rows = data["rows"]
+scenes = [r["scene"] for r in data["ratios"]]
+main = [r for r in rows if r["group"] in ("ours", "anchor")]
+engines = []
+for r in main:
+    if r["engine"] not in engines:
+        engines.append(r["engine"])
+
+
+def short(name):
+    return name.replace("Embree 3 rtcIntersect1/rtcOccluded1", "Embree 3").replace("VTK vtk", "VTK ")
+
+
+fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(15, 6))
+width = 0.8 / max(1, len(engines))
+for k, eng in enumerate(engines):
+    v1, v2 = [], []
+    for s in scenes:
+        r = next((r for r in main if r["scene"] == s and r["engine"] == eng), None)
+        v1.append(r["closest1"]["median"] if r else 0)
+        v2.append(r["closest2"]["median"] if r and "closest2" in r else 0)
+    xs = [i + (k - len(engines) / 2) * width + width / 2 for i in range(len(scenes))]
+    bars = ax1.bar(xs, v1, width * 0.9, label=short(eng.split(" top")[0]))
+    ax1.scatter([x for x, v in zip(xs, v2) if v > 0], [v for v in v2 if v > 0], marker="_", s=80, color="black",
+                zorder=3)
+ax1.set_xticks(range(len(scenes)))
+ax1.set_xticklabels(scenes)
+ax1.set_yscale("log")
+ax1.set_ylabel("closest hit, Mrays/s (bar: 1 thread, dash: 2 threads)")
+ax1.set_title("Primary rays: TriangleGrid vs Embree 3 and VTK locators")
+ax1.legend(fontsize=7)
+ax1.grid(axis="y", which="both", alpha=0.3)
+
+markers = {"R": "o", "O": "s"}
+for s in scenes:
+    t = [r for r in rows if r["scene"] == s and r["group"] == "table"]
+    if not t:
+        continue
+    line = ax2.plot([r["bytesPerTriangle"] for r in t], [r["closest1"]["median"] for r in t], "o", label=s)
+    for r in t:
+        ax2.annotate(r["engine"].split(" top")[0].split(" depth")[0], (r["bytesPerTriangle"], r["closest1"]["median"]),
+                     fontsize=6, xytext=(3, 2), textcoords="offset points", color=line[0].get_color())
+ax2.set_xscale("log")
+ax2.set_xlabel("bytes per triangle (structure + triangle store)")
+ax2.set_ylabel("closest hit, Mrays/s, 1 thread")
+ax2.set_title("The paper's tables: R[thr,N] and O[thr,w]")
+ax2.grid(alpha=0.3)
+ax2.legend(fontsize=7)
+fig.suptitle("adaptivert bench triangles, %s, commit %s, %s" % (data["date"], data["commit"], data["cpu"]), fontsize=9)
+fig.tight_layout()
+fig.savefig(sys.argv[2], dpi=90)
