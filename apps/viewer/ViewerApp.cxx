@@ -2,6 +2,7 @@
 #include "ViewerAppInternals.h"
 
 #include "Camera.h"
+#include "DisplayCheck.h"
 #include "Error.h"
 
 #ifdef ART_HAVE_Reduction
@@ -45,6 +46,11 @@ int ViewerApp::Run()
   if (!display || !*display)
   {
     std::fprintf(stderr, "adaptivert-view: no X display: set DISPLAY or run under xvfb-run -a\n");
+    return 1;
+  }
+  if (!CanOpenDisplay()) // VTK would crash on a display it cannot open
+  {
+    std::fprintf(stderr, "adaptivert-view: cannot open X display '%s'\n", display);
     return 1;
   }
   Internals& I = *Impl;
