@@ -122,8 +122,9 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   {
     throw Error("set a target tet count or a maximum error");
   }
-  // Without a tet budget the error bound alone decides; never more tets than 6 per voxel.
-  const long long cap = Opt.TargetTets > 0 ? Opt.TargetTets : (haveError ? 6 * nvox : budgets.back());
+  // Without a tet budget the error bound alone decides, up to one tet per voxel (beyond that
+  // nothing is reduced any more).
+  const long long cap = Opt.TargetTets > 0 ? Opt.TargetTets : (haveError ? std::max<long long>(nvox, budgets.empty() ? 0 : budgets.back()) : budgets.back());
   const double errorBound =
     haveError ? Opt.TargetError * (Opt.ErrorRelative ? (volume.Range[1] - volume.Range[0]) : 1.0) : -1.0;
   const bool maxMetric = Opt.ErrorMetric == ReducerOptions::Metric::Max;

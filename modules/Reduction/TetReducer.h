@@ -32,7 +32,8 @@ struct ReducerOptions
     Max
   };
   long long TargetTets = 0;      ///< stop at this many tets (0: not set)
-  double TargetError = -1;       ///< stop when the global error is at most this (< 0: not set)
+  double TargetError = -1;       ///< stop when the global error is at most this (< 0: not set);
+                                 ///< alone, it stops at one tet per voxel at most
   Metric ErrorMetric = Metric::RMS;
   bool ErrorRelative = false;    ///< TargetError is a fraction of the scalar range
   std::vector<long long> Levels; ///< more budgets (tets) emitted on the way, nested
