@@ -103,7 +103,6 @@ void ViewerApp::Internals::SetupWindow()
   EdgeMapper->ScalarVisibilityOff();
   EdgeActor->SetMapper(EdgeMapper);
   EdgeActor->GetProperty()->SetColor(0.45, 0.85, 1.0);
-  EdgeActor->GetProperty()->SetOpacity(0.12); // dense levels read as a haze, densest where tets are small
   EdgeActor->VisibilityOff();
   Overlay->AddActor(EdgeActor);
 
@@ -181,6 +180,9 @@ void ViewerApp::Internals::ShowLevel(int i)
   State.Level = i;
   Mapper->SetInputData(Scene.Levels[i]);
   Edges->SetInputData(Scene.Levels[i]);
+  // Few tets: solid lines; many: a faint haze that is densest where the tets are small.
+  const double tets = std::max<double>(1, Scene.Levels[i]->GetNumberOfCells());
+  EdgeActor->GetProperty()->SetOpacity(std::min(0.9, std::max(0.08, std::sqrt(500.0 / tets))));
   if (!Ren->HasViewProp(Volume))
   {
     Ren->AddVolume(Volume);
