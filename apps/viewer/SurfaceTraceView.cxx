@@ -1,13 +1,13 @@
 #include "SurfaceTraceView.h"
 
 #include "Error.h"
+#include "ViewerScene.h"
 
 #ifdef ART_HAVE_TriangleGrid
 #include "Accelerator.h"
 #include "Camera.h"
 #include "SurfaceTracer.h"
 #include "TriangleStore.h"
-
 #endif
 
 #include <vtkCallbackCommand.h>
@@ -34,13 +34,12 @@ struct SurfaceTraceView::Internals
   vtkNew<vtkImageData> Frame;
   vtkNew<vtkTexture> Texture;
   vtkNew<vtkCallbackCommand> OnStart;
-  double Build = 0, Last = 0;
+  double Last = 0;
 };
 
 SurfaceTraceView::SurfaceTraceView(vtkPolyData* pd, const std::string& file)
   : Impl(new Internals)
 {
-  const auto t0 = std::chrono::steady_clock::now();
   Impl->Store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd));
   if (Impl->Store->Size() == 0)
   {
@@ -62,7 +61,6 @@ SurfaceTraceView::SurfaceTraceView(vtkPolyData* pd, const std::string& file)
       }
     }
   }
-  Impl->Build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   Impl->Texture->SetInputData(Impl->Frame);
   Impl->Texture->InterpolateOff();
 }
@@ -133,61 +131,64 @@ art::Box3 SurfaceTraceView::Bounds() const
   return Impl->Store->Bounds();
 }
 
-std::size_t SurfaceTraceView::NumberOfTriangles() const
-{
-  return Impl->Store->Size();
-}
-
-double SurfaceTraceView::BuildSeconds() const
-{
-  return Impl->Build;
-}
-
 double SurfaceTraceView::LastTraceSeconds() const
 {
   return Impl->Last;
 }
 
-std::string SurfaceTraceView::AcceleratorName() const
+std::string SurfaceTraceView::Description() const
 {
-  return Impl->Acc->Name();
+  const std::string acc = Impl->Acc->Name(); // "R[12,4] top 12x10x6 depth 3": the short form
+  return Grouped(static_cast<long long>(Impl->Store->Size())) + " triangles, SurfaceTracer, " +
+    acc.substr(0, acc.find(' '));
 }
 } // namespace view
 
 #else
-// Built without AdaptiveRT::TriangleGrid: triangle scenes are refused with one clear line.
+// Built without AdaptiveRT::TriangleGrid: the scene is drawn by a plain vtkPolyDataMapper, and
+// the status line says so.
+#include <vtkActor.h>
+#include <vtkPolyDataMapper.h>
+
 namespace view
 {
 struct SurfaceTraceView::Internals
 {
+  vtkSmartPointer<vtkPolyData> Scene;
+  vtkNew<vtkPolyDataMapper> Mapper;
+  vtkNew<vtkActor> Actor;
 };
 
-SurfaceTraceView::SurfaceTraceView(vtkPolyData*, const std::string& file)
+SurfaceTraceView::SurfaceTraceView(vtkPolyData* pd, const std::string& file)
+  : Impl(new Internals)
 {
-  throw art::Error("triangle scenes need the TriangleGrid module, which is not in this build", file);
+  if (!pd || pd->GetNumberOfPolys() == 0)
+  {
+    throw art::Error("has no triangles to show", file);
+  }
+  Impl->Scene = pd;
+  Impl->Mapper->SetInputData(pd);
+  Impl->Actor->SetMapper(Impl->Mapper);
 }
 SurfaceTraceView::~SurfaceTraceView() = default;
-void SurfaceTraceView::Attach(vtkRenderer*) {}
+void SurfaceTraceView::Attach(vtkRenderer* ren)
+{
+  ren->AddActor(Impl->Actor);
+}
 void SurfaceTraceView::Trace(vtkRenderer*) {}
 art::Box3 SurfaceTraceView::Bounds() const
 {
-  return {};
-}
-std::size_t SurfaceTraceView::NumberOfTriangles() const
-{
-  return 0;
-}
-double SurfaceTraceView::BuildSeconds() const
-{
-  return 0;
+  double b[6];
+  Impl->Scene->GetBounds(b);
+  return art::Box3::FromBounds(b);
 }
 double SurfaceTraceView::LastTraceSeconds() const
 {
   return 0;
 }
-std::string SurfaceTraceView::AcceleratorName() const
+std::string SurfaceTraceView::Description() const
 {
-  return {};
+  return Grouped(Impl->Scene->GetNumberOfPolys()) + " polygons, plain vtkPolyDataMapper (no TriangleGrid in this build)";
 }
 } // namespace view
 #endif

@@ -1,7 +1,8 @@
 // SurfaceTraceView: shows a triangle scene through the project's own ray tracing machine
 // (TriangleGrid recursive grid + art::SurfaceTracer, Dmitriev's closest-hit and shadow queries)
 // in a VTK window: each frame is traced from the renderer's camera and drawn as the renderer's
-// textured background, so the trackball camera drives the tracer directly.
+// textured background, so the trackball camera drives the tracer directly. Built without
+// AdaptiveRT::TriangleGrid, a plain vtkPolyDataMapper draws the scene and Description() says so.
 #ifndef art_SurfaceTraceView_h
 #define art_SurfaceTraceView_h
 
@@ -32,10 +33,9 @@ public:
   void SetSampleDistance(int d) { Sample = d; }
 
   art::Box3 Bounds() const;
-  std::size_t NumberOfTriangles() const;
-  double BuildSeconds() const;
   double LastTraceSeconds() const;
-  std::string AcceleratorName() const;
+  /// One line for the status text: "2,650 triangles, SurfaceTracer, R[12,4]".
+  std::string Description() const;
 
 private:
   void Trace(vtkRenderer* ren);

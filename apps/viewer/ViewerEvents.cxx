@@ -40,10 +40,15 @@ void ViewerApp::Internals::OnKey(char k)
       break;
     case KeyResult::Screenshot:
     {
+      // --screenshot names the file; otherwise the first free adaptivert-view-N.png here.
       std::string path = Opt.Screenshot;
-      for (int n = 1; path.empty() || (path == Opt.Screenshot ? false : std::filesystem::exists(path)); ++n)
+      for (int n = 1; path.empty(); ++n)
       {
-        path = "adaptivert-view-" + std::to_string(n) + ".png";
+        const std::string candidate = "adaptivert-view-" + std::to_string(n) + ".png";
+        if (!std::filesystem::exists(candidate))
+        {
+          path = candidate;
+        }
       }
       if (Screenshot(path))
       {

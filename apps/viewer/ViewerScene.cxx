@@ -58,11 +58,7 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf)
     auto* pd = vtkPolyData::SafeDownCast(data);
     s.Surface = std::make_unique<SurfaceTraceView>(pd, file);
     s.Bounds = s.Surface->Bounds();
-    char buf[200];
-    const std::string acc = s.Surface->AcceleratorName();
-    std::snprintf(buf, sizeof buf, "%s triangles, SurfaceTracer, %s",
-      Grouped(static_cast<long long>(s.Surface->NumberOfTriangles())).c_str(), acc.substr(0, acc.find(' ')).c_str());
-    s.Note = buf;
+    s.Note = s.Surface->Description();
     return s;
   }
   if (kind == art::DataKind::Volume)
