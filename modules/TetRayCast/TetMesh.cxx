@@ -13,6 +13,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <tuple>
 
@@ -61,6 +62,20 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
     {
       throw Error("point " + std::to_string(i) + " has a non-finite coordinate or scalar");
     }
+  }
+  for (std::size_t t = 0; t < Tets.size(); ++t)
+  {
+    for (int id : Tets[t])
+    {
+      if (id < 0 || id >= np)
+      {
+        throw Error("tet " + std::to_string(t) + " refers to point " + std::to_string(id) + " of " + std::to_string(np));
+      }
+    }
+  }
+  if (Tets.size() > LocalityThreshold)
+  {
+    SortForLocality();
   }
   Range[0] = *std::min_element(Values.begin(), Values.end());
   Range[1] = *std::max_element(Values.begin(), Values.end());
@@ -242,6 +257,76 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
     }
     Convex = count == Boundary.size();
   }
+}
+
+namespace
+{
+// Interleaves the low 21 bits of x, y, z (a Morton / Z-order code).
+std::uint64_t Spread(std::uint64_t v)
+{
+  v &= 0x1fffff;
+  v = (v | v << 32) & 0x1f00000000ffffULL;
+  v = (v | v << 16) & 0x1f0000ff0000ffULL;
+  v = (v | v << 8) & 0x100f00f00f00f00fULL;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+  v = (v | v << 2) & 0x1249249249249249ULL;
+  return v;
+}
+} // namespace
+
+void TetMesh::SortForLocality()
+{
+  // A ray walks to face neighbours in every direction; in input order (x fastest for a volume)
+  // a step in z jumps megabytes. Z-order of points and of tet centroids keeps neighbours close.
+  Box3 box;
+  for (const Vec3& p : Points)
+  {
+    box.Expand(p);
+  }
+  const Vec3 size = box.Size();
+  auto code = [&](const Vec3& p) {
+    std::uint64_t c[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double u = size[a] > 0 ? (p[a] - box.lo[a]) / size[a] : 0.0;
+      c[a] = static_cast<std::uint64_t>(std::min(std::max(u, 0.0), 1.0) * 2097151.0);
+    }
+    return Spread(c[0]) | Spread(c[1]) << 1 | Spread(c[2]) << 2;
+  };
+  std::vector<std::pair<std::uint64_t, int>> order(Points.size());
+  for (std::size_t i = 0; i < Points.size(); ++i)
+  {
+    order[i] = { code(Points[i]), static_cast<int>(i) };
+  }
+  vtkSMPTools::Sort(order.begin(), order.end());
+  std::vector<int> newId(Points.size());
+  std::vector<Vec3> pts(Points.size());
+  std::vector<double> val(Points.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    newId[order[i].second] = static_cast<int>(i);
+    pts[i] = Points[order[i].second];
+    val[i] = Values[order[i].second];
+  }
+  Points.swap(pts);
+  Values.swap(val);
+  order.resize(Tets.size());
+  for (std::size_t t = 0; t < Tets.size(); ++t)
+  {
+    auto& v = Tets[t];
+    for (int& id : v)
+    {
+      id = newId[id];
+    }
+    order[t] = { code((Points[v[0]] + Points[v[1]] + Points[v[2]] + Points[v[3]]) * 0.25), static_cast<int>(t) };
+  }
+  vtkSMPTools::Sort(order.begin(), order.end());
+  std::vector<std::array<int, 4>> tets(Tets.size());
+  for (std::size_t t = 0; t < order.size(); ++t)
+  {
+    tets[t] = Tets[order[t].second];
+  }
+  Tets.swap(tets);
 }
 
 TetMesh::Plane TetMesh::FacePlane(std::size_t t, int f) const

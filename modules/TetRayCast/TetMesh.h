@@ -77,7 +77,13 @@ public:
   /// Largest edge length (VTK's pre-integration table is sized by it).
   double MaxEdge() const { return LongestEdge; }
 
+  /// Meshes larger than this are renumbered in Z-order (points and tets) for cache locality;
+  /// smaller ones keep the input numbering.
+  static constexpr std::size_t LocalityThreshold = 65536;
+
 private:
+  void SortForLocality();
+
   std::vector<Vec3> Points;
   std::vector<double> Values;
   std::vector<std::array<int, 4>> Tets, Nbrs;
