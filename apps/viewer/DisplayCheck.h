@@ -1,13 +1,19 @@
-// DisplayCheck: whether the X display in $DISPLAY can be opened. VTK's X render window crashes
-// on one it cannot open, so the viewer asks first and refuses in one line. Kept apart because
-// Xlib's macros (Status, None, Bool) clash with ordinary names.
+// DisplayCheck: opens the X display in $DISPLAY for the viewer's window. VTK's X render window
+// crashes on a display it cannot open, so the viewer opens it first, refuses in one line when
+// that fails, and hands the open connection to VTK. Kept apart because Xlib's macros (Status,
+// None, Bool) clash with ordinary names.
 #ifndef art_DisplayCheck_h
 #define art_DisplayCheck_h
 
+#include <memory>
+
 namespace view
 {
-/// True when $DISPLAY opens (always true when built without Xlib headers).
-bool CanOpenDisplay();
+/// The open connection (an X Display*, closed when the last owner lets go), or null when
+/// $DISPLAY cannot be opened. Without Xlib headers at build time: a non-null dummy.
+std::shared_ptr<void> OpenDisplay();
+/// True when `d` is a real X connection that VTK can be given.
+bool IsXDisplay(const std::shared_ptr<void>& d);
 } // namespace view
 
 #endif

@@ -48,12 +48,17 @@ int ViewerApp::Run()
     std::fprintf(stderr, "adaptivert-view: no X display: set DISPLAY or run under xvfb-run -a\n");
     return 1;
   }
-  if (!CanOpenDisplay()) // VTK would crash on a display it cannot open
+  XDisplay = OpenDisplay(); // VTK would crash on a display it cannot open
+  if (!XDisplay)
   {
     std::fprintf(stderr, "adaptivert-view: cannot open X display '%s'\n", display);
     return 1;
   }
   Internals& I = *Impl;
+  if (IsXDisplay(XDisplay))
+  {
+    I.Window->SetDisplayId(XDisplay.get()); // one connection, checked above, for window and interactor
+  }
   I.SetupWindow();
 #ifdef ART_HAVE_Reduction
   if (I.Scene.Image)

@@ -26,6 +26,7 @@ public:
 
 private:
   struct Internals;
+  std::shared_ptr<void> XDisplay; ///< declared first: closed after every VTK object is gone
   std::unique_ptr<Internals> Impl;
 };
 } // namespace view

@@ -131,8 +131,8 @@ void ViewerApp::Internals::PollReduction()
     ReductionFinished = true;
     bar = st.Error.empty() ? "reduced: " + std::to_string(Scene.Levels.size()) + " nested levels from one run"
                            : "reduction failed: " + st.Error;
-    char note[64];
-    std::snprintf(note, sizeof note, " - reduced in %.2f s", st.Seconds);
+    char note[96];
+    std::snprintf(note, sizeof note, ", %zu levels reduced in %.2f s", Scene.Levels.size(), st.Seconds);
     ReductionNote = note;
     TitleFrameSeconds = -1;
     if (!st.Error.empty())
@@ -226,7 +226,15 @@ void ViewerApp::Internals::StepScript()
   if (!Opt.Screenshot.empty() && ReductionFinished && !Quitting)
   {
     Window->Render();
-    Quit(Screenshot(Opt.Screenshot) ? 0 : 1);
+    const bool ok = Screenshot(Opt.Screenshot);
+    if (ok)
+    {
+      // The figures a scripted run is for; the picture itself carries no timings.
+      const double frame = Scene.Surface ? Scene.Surface->LastTraceSeconds() : Mapper->GetLastRenderTime();
+      std::printf("adaptivert-view: wrote %s (%d x %d, last frame %.1f ms%s)\n", Opt.Screenshot.c_str(),
+        Window->GetSize()[0], Window->GetSize()[1], frame * 1e3, ReductionNote.empty() ? "" : ReductionNote.c_str());
+    }
+    Quit(ok ? 0 : 1);
   }
 }
 
