@@ -23,7 +23,6 @@
 
 namespace view
 {
-
 ViewerApp::ViewerApp(ViewerOptions options)
   : Impl(new Internals)
 {
@@ -36,6 +35,13 @@ ViewerApp::ViewerApp(ViewerOptions options)
   const double lo = Impl->Scene.Range[0], hi = Impl->Scene.Range[1];
   Impl->State.IsoStep = std::max((hi - lo) / 50.0, 1e-12);
   Impl->State.IsoValue = lo + 15 * Impl->State.IsoStep; // 30% of the range: bone on CT
+#ifdef ART_HAVE_Reduction
+  if (Impl->Scene.Image) // the voxel checks (NaN, 2-D, components) fail here, before any window
+  {
+    Impl->Worker = std::make_unique<ReductionWorker>(
+      art::VolumeFromImage(Impl->Scene.Image, Impl->Opt.File), Impl->Opt.Tets);
+  }
+#endif
 }
 
 ViewerApp::~ViewerApp() = default;
@@ -61,9 +67,8 @@ int ViewerApp::Run()
   }
   I.SetupWindow();
 #ifdef ART_HAVE_Reduction
-  if (I.Scene.Image)
+  if (I.Worker)
   {
-    I.Worker = std::make_unique<ReductionWorker>(art::VolumeFromImage(I.Scene.Image, I.Opt.File), I.Opt.Tets);
     I.Worker->Start();
     I.ReductionFinished = false;
   }
