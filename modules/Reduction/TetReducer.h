@@ -9,7 +9,7 @@
 // and the old fit is exactly representable on the refined mesh, so the warm start is exact.
 // Measured (adaptivert bench reduction, CT head, paper's levels 0.01%..1%): RMS error 0.75-0.83 x
 // uniform downsampling at equal vertices on the full 256x256x108 CT (0.81-0.89 x on the 128
-// default), and 0.41-0.57 x VTK's quadric decimation, which stalls above small targets and
+// default), and 0.30-0.58 x VTK's quadric decimation, which stalls above small targets and
 // leaves a third or more of the voxel centres uncovered; over the voxels it does cover its RMS
 // is lower than ours over all, a hint that its anisotropic tets suit CT edges better than
 // isotropic bisection. TetGen/CGAL sizing-field refinement was not built: no exact nesting.
