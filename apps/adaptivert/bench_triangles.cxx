@@ -168,7 +168,8 @@ void RunAll(const Engine& e, const std::vector<art::Ray>& rays)
   });
 }
 
-// An interior viewpoint for enclosed scenes (levels): the lattice point whose 26 probe rays all hit
+// An interior viewpoint for enclosed scenes (levels): the lattice point whose 26 probe rays hit (all
+// but a few: open sky), mostly on one side of the walls,
 // and whose mean free distance is largest; lights at the next best points. Framed outside otherwise.
 void MakeRays(Scene& s, int width, int height, int nLights)
 {
@@ -182,7 +183,7 @@ void MakeRays(Scene& s, int width, int height, int nLights)
     art::Vec3 look;
   };
   std::vector<Cand> cands;
-  const int K = 7;
+  const int K = 11;
   for (int i = 1; i <= K; ++i)
   {
     for (int j = 1; j <= K; ++j)
@@ -193,6 +194,7 @@ void MakeRays(Scene& s, int width, int height, int nLights)
           b.lo.z + b.Size().z * k / (K + 1));
         double sum = 0, best = -1;
         art::Vec3 look;
+        int misses = 0; // open sky: a level may have no ceiling over some of its rooms
         bool enclosed = true;
         int front = 0;
         for (int dx = -1; dx <= 1 && enclosed; ++dx)
@@ -210,9 +212,11 @@ void MakeRays(Scene& s, int width, int height, int nLights)
               r.dir = art::Normalize(art::Vec3(dx, dy, dz));
               art::Hit h;
               art::Counters c;
-              enclosed = acc->Closest(r, h, c);
-              sum += h.t;
-              if (enclosed)
+              const bool hit = acc->Closest(r, h, c);
+              misses += hit ? 0 : 1;
+              enclosed = misses <= 5;
+              sum += hit ? h.t : 0.0;
+              if (hit)
               {
                 const size_t rec = static_cast<size_t>(h.record);
                 const art::Vec3 n = art::Cross(s.store->Vertex(rec, 1) - s.store->Vertex(rec, 0),
@@ -228,7 +232,7 @@ void MakeRays(Scene& s, int width, int height, int nLights)
           }
         }
         // Most probes should meet the same side of the walls (a room, not the inside of a solid).
-        if (enclosed && (front >= 21 || front <= 5))
+        if (enclosed && (front >= 18 - misses || front <= 8))
         {
           cands.push_back({ p, sum / 26, look });
         }
@@ -241,7 +245,7 @@ void MakeRays(Scene& s, int width, int height, int nLights)
   // Architectural scenes (many coplanar triangles, like game levels) are seen from inside; objects
   // (nearly every triangle its own plane, like the bunny) are framed from outside.
   const bool architectural = double(s.store->Planes().size()) < 0.8 * double(s.store->Size());
-  if (architectural && !cands.empty() && cands[0].score > 0.05 * b.Diagonal())
+  if (architectural && !cands.empty() && cands[0].score > 0.01 * b.Diagonal())
   {
     const Cand& c = cands[0];
     vcam->SetPosition(c.p.x, c.p.y, c.p.z);

@@ -13,14 +13,24 @@ data = json.load(open(sys.argv[1]))
 rows = data["rows"]
 scenes = [r["scene"] for r in data["ratios"]]
 main = [r for r in rows if r["group"] in ("ours", "anchor")]
+
+
+def kind(name):
+    """One label per engine across scenes: drops grid sizes and depths from our names."""
+    if name.startswith("uniform grid"):
+        return "uniform grid"
+    if name.startswith(("R[", "O[")):
+        label = name[: name.index("]") + 1]
+        return label + (" no-top" if "no-top" in name else "")
+    return name.replace("Embree 3 rtcIntersect1/rtcOccluded1", "Embree 3").replace("VTK vtk", "VTK ")
+
+
+for r in main:
+    r["kind"] = kind(r["engine"])
 engines = []
 for r in main:
-    if r["engine"] not in engines:
-        engines.append(r["engine"])
-
-
-def short(name):
-    return name.replace("Embree 3 rtcIntersect1/rtcOccluded1", "Embree 3").replace("VTK vtk", "VTK ")
+    if r["kind"] not in engines:
+        engines.append(r["kind"])
 
 
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(15, 6))
@@ -28,11 +38,11 @@ width = 0.8 / max(1, len(engines))
 for k, eng in enumerate(engines):
     v1, v2 = [], []
     for s in scenes:
-        r = next((r for r in main if r["scene"] == s and r["engine"] == eng), None)
+        r = next((r for r in main if r["scene"] == s and r["kind"] == eng), None)
         v1.append(r["closest1"]["median"] if r else 0)
         v2.append(r["closest2"]["median"] if r and "closest2" in r else 0)
     xs = [i + (k - len(engines) / 2) * width + width / 2 for i in range(len(scenes))]
-    bars = ax1.bar(xs, v1, width * 0.9, label=short(eng.split(" top")[0]))
+    ax1.bar(xs, v1, width * 0.9, label=eng)
     ax1.scatter([x for x, v in zip(xs, v2) if v > 0], [v for v in v2 if v > 0], marker="_", s=80, color="black",
                 zorder=3)
 ax1.set_xticks(range(len(scenes)))
@@ -50,7 +60,7 @@ for s in scenes:
         continue
     line = ax2.plot([r["bytesPerTriangle"] for r in t], [r["closest1"]["median"] for r in t], "o", label=s)
     for r in t:
-        ax2.annotate(r["engine"].split(" top")[0].split(" depth")[0], (r["bytesPerTriangle"], r["closest1"]["median"]),
+        ax2.annotate(kind(r["engine"]), (r["bytesPerTriangle"], r["closest1"]["median"]),
                      fontsize=6, xytext=(3, 2), textcoords="offset points", color=line[0].get_color())
 ax2.set_xscale("log")
 ax2.set_xlabel("bytes per triangle (structure + triangle store)")
