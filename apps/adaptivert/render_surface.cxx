@@ -1,5 +1,6 @@
 // The surface tracer behind `adaptivert render` for triangle scenes (.ply .obj .stl .vtp): the
 // TriangleGrid ray tracing machine with point lights, shadows and transparent surfaces.
+#ifdef ART_HAVE_TriangleGrid
 #include "Accelerator.h"
 #include "Camera.h"
 #include "Command.h"
@@ -202,3 +203,4 @@ int Run(const cli::Options& o, const std::string& input)
 
 cli::RendererRegistrar reg({ "surface", { art::DataKind::Surface }, Declare, Run });
 } // namespace
+#endif // ART_HAVE_TriangleGrid
