@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 packages=(
   g++ cmake ninja-build pkg-config ccache git
   libvtk9-dev python3-vtk9 python3-matplotlib
-  libcgal-dev libtet1.5-dev libopenimageio-dev libeigen3-dev libtbb-dev
+  libopenimageio-dev libtbb-dev
   libgtest-dev libembree-dev nlohmann-json3-dev
   xvfb xauth
 )

@@ -18,6 +18,10 @@ from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, 
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL render window)
 import vtkmodules.vtkRenderingVolumeOpenGL2  # noqa: F401  (draws the mapper's image)
 
+if not os.environ.get("DISPLAY"):
+    print("skipped: no X display (VTK draws only through X here; use xvfb-run -a)")
+    sys.exit(77)
+
 here = os.path.dirname(os.path.abspath(__file__))
 volume_file = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "..", "data", "ct-head-128.mha")
 out_file = sys.argv[2] if len(sys.argv) > 2 else "reduce_and_render.png"
