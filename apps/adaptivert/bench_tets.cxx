@@ -13,6 +13,7 @@
 #include "ImageMetrics.h"
 #include "Json.h"
 #include "ParallelTiles.h"
+#include "ReducedTets.h"
 #include "TetMesh.h"
 #include "TetRayCaster.h"
 #include "TransferFunction.h"
@@ -248,18 +249,8 @@ int Run(const cli::Options& o)
       ro.Levels = levels;
       for (const auto& r : art::TetReducer(ro).Run(art::VolumeFromImage(volume, in)))
       {
-        std::vector<art::Vec3> p(r.NumberOfVertices());
-        for (std::size_t i = 0; i < p.size(); ++i)
-        {
-          p[i] = art::Vec3(&r.Points[3 * i]);
-        }
-        std::vector<std::array<int, 4>> t(r.NumberOfTets());
-        for (std::size_t i = 0; i < t.size(); ++i)
-        {
-          t[i] = { r.Tets[4 * i], r.Tets[4 * i + 1], r.Tets[4 * i + 2], r.Tets[4 * i + 3] };
-        }
         meshes.push_back({ "reduced " + std::to_string(r.NumberOfTets()),
-          std::make_unique<art::TetMesh>(std::move(p), r.Values, std::move(t)), r.Rms });
+          std::make_unique<art::TetMesh>(cli::ToTetMesh(r)), r.Rms });
       }
     }
   }

@@ -136,7 +136,7 @@ std::string CsvField(const json& v)
 json RenderSeconds(const json& r)
 {
   const json& out = r.contains("render") ? r["render"] : json();
-  for (const char* k : { "render_seconds", "renderSeconds", "seconds" })
+  for (const char* k : { "render_seconds", "seconds" })
   {
     if (out.is_object() && out.contains(k) && out[k].is_number())
     {

@@ -10,6 +10,7 @@
 #include "Json.h"
 #include "ParallelTiles.h"
 #include "ProgressBar.h"
+#include "ReducedTets.h"
 #include "Render.h"
 #include "TetMesh.h"
 #include "TetRayCaster.h"
@@ -159,21 +160,11 @@ int Run(const cli::Options& o, const std::string& input)
           throw art::Error("the reducer produced no mesh", input);
         }
         const art::ReducedMesh& r = levels.back();
-        std::vector<art::Vec3> p(r.NumberOfVertices());
-        for (std::size_t i = 0; i < p.size(); ++i)
-        {
-          p[i] = art::Vec3(&r.Points[3 * i]);
-        }
-        std::vector<std::array<int, 4>> t(r.NumberOfTets());
-        for (std::size_t i = 0; i < t.size(); ++i)
-        {
-          t[i] = { r.Tets[4 * i], r.Tets[4 * i + 1], r.Tets[4 * i + 2], r.Tets[4 * i + 3] };
-        }
-        mesh = art::TetMesh(std::move(p), r.Values, std::move(t));
+        mesh = cli::ToTetMesh(r);
         std::ostringstream ss;
         ss << "adaptive tets (least-squares reduction, RMS error " << r.Rms << ", max " << r.Max << ")";
         meshLabel = ss.str();
-        j.Set("reducedRms", r.Rms).Set("reducedMax", r.Max);
+        j.Set("reduced_rms", r.Rms).Set("reduced_max", r.Max);
 #else
         throw art::Error("--tets and --max-error need the Reduction module, which is not in this build", input);
 #endif
@@ -265,13 +256,13 @@ int Run(const cli::Options& o, const std::string& input)
     j.Set("mesh", o.Flag("reference") ? std::string("voxel reference") : meshLabel);
     j.Set("tets", static_cast<long long>(mesh.NumberOfTets()))
       .Set("vertices", static_cast<long long>(mesh.NumberOfPoints()));
-    j.Set("buildSeconds", buildSeconds).Set("renderSeconds", st.seconds).Set("mraysPerSecond", mrays);
-    j.Set("tetsCrossed", static_cast<long long>(c.tetsCrossed)).Set("tetsPerRay", c.PerRay(c.tetsCrossed));
-    j.Set("nsPerTetCrossed", nsPerTet).Set("entrySearches", static_cast<long long>(c.entrySearches))
-      .Set("fallbackExits", static_cast<long long>(st.nudges));
+    j.Set("build_seconds", buildSeconds).Set("render_seconds", st.seconds).Set("mrays_per_second", mrays);
+    j.Set("tets_crossed", static_cast<long long>(c.tetsCrossed)).Set("tets_per_ray", c.PerRay(c.tetsCrossed));
+    j.Set("ns_per_tet_crossed_per_thread", nsPerTet).Set("entry_searches", static_cast<long long>(c.entrySearches))
+      .Set("fallback_exits", static_cast<long long>(st.nudges));
     if (haveRef)
     {
-      j.Set("referenceSeconds", rst.seconds).Set("psnr", m.psnr).Set("ssim", m.ssim).Set("rmse", m.rmse);
+      j.Set("reference_seconds", rst.seconds).Set("psnr_db", m.psnr).Set("ssim", m.ssim).Set("rmse", m.rmse);
     }
     std::printf("%s\n", j.Str().c_str());
     return cli::ExitOk;
