@@ -68,7 +68,14 @@ int Run(const cli::Options& o, const std::string& input)
     throw art::Error("has no triangles to render", input);
   }
   art::AcceleratorOptions ao;
-  ao.kind = art::AcceleratorKindFromName(o.Get("accelerator"));
+  try
+  {
+    ao.kind = art::AcceleratorKindFromName(o.Get("accelerator"));
+  }
+  catch (const art::Error& e)
+  {
+    throw cli::UsageError(e.what()); // a command-line mistake: exit 2
+  }
   ao.voxelThreshold = static_cast<int>(o.GetInt("threshold"));
   ao.subdivisions = static_cast<int>(o.GetInt("subdivisions"));
   ao.planeWeight = static_cast<int>(o.GetInt("plane-weight"));
