@@ -3,6 +3,7 @@
 // volume's tetrahedrisation at the same tet count and with uniform downsampling at the same
 // vertex count: RMS and max error against the voxels, build time, peak memory.
 #include "Bench.h"
+#include "BenchUtil.h"
 #include "Command.h"
 
 #ifdef ART_HAVE_Reduction
@@ -62,44 +63,6 @@ double PeakMBSinceReset(long long)
   return StatusKB("VmHWM") / 1024.0;
 }
 
-struct Stats
-{
-  double median = 0, lo = 0, hi = 0;
-};
-Stats Summarise(std::vector<double> v)
-{
-  Stats s;
-  if (v.empty())
-  {
-    return s;
-  }
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  s.median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-  s.lo = v.front();
-  s.hi = v.back();
-  return s;
-}
-
-std::string Shell(const std::string& cmd)
-{
-  std::string out;
-  if (FILE* p = popen(cmd.c_str(), "r"))
-  {
-    char buf[256];
-    while (std::fgets(buf, sizeof buf, p))
-    {
-      out += buf;
-    }
-    pclose(p);
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == '\r'))
-  {
-    out.pop_back();
-  }
-  return out;
-}
-
 long long ParseBudget(const std::string& s, long long voxels)
 {
   char* end = nullptr;
@@ -127,14 +90,14 @@ struct Row
   // ours
   long long tets = 0, vertices = 0;
   double rms = 0, max = 0;
-  Stats seconds;
+  cli::BenchStats seconds;
   // quadric decimation at our tet count
   long long qTets = 0, qVertices = 0, qUncovered = 0, qInverted = 0;
   double qRms = -1, qMax = -1, qSeconds = 0, qCoveredRms = -1;
   // uniform downsampling at our vertex count
   long long uVertices = 0, uTets = 0;
   double uRms = 0, uMax = 0;
-  Stats uSeconds;
+  cli::BenchStats uSeconds;
 };
 
 int Run(const cli::Options& o)
@@ -194,10 +157,10 @@ int Run(const cli::Options& o)
     w.vertices = m.NumberOfVertices();
     w.rms = m.Rms;
     w.max = m.Max;
-    w.seconds = Summarise(times[i]);
+    w.seconds = cli::Summarise(times[i]);
     std::fprintf(stderr, "  ours     %8lld tets  RMS %8.3f  max %8.1f  %.2f s\n", w.tets, w.rms, w.max, w.seconds.median);
   }
-  const Stats ourPeak = Summarise(peaks);
+  const cli::BenchStats ourPeak = cli::Summarise(peaks);
 
   // Uniform downsampling to our vertex count (cheap: every run timed).
   for (auto& w : rows)
@@ -217,7 +180,7 @@ int Run(const cli::Options& o)
     w.uTets = e.Tets;
     w.uRms = e.Rms;
     w.uMax = e.Max;
-    w.uSeconds = Summarise(t);
+    w.uSeconds = cli::Summarise(t);
     std::fprintf(stderr, "  uniform  %8lld verts RMS %8.3f  max %8.1f\n", w.uVertices, w.uRms, w.uMax);
   }
 
@@ -259,7 +222,7 @@ int Run(const cli::Options& o)
 
   // The speed target: a separate run straight to N tets.
   const long long timedTets = o.GetInt("red-timed-tets");
-  Stats timed, timedPeak;
+  cli::BenchStats timed, timedPeak;
   art::ReducedMesh timedMesh;
   if (timedTets > 0)
   {
@@ -278,16 +241,16 @@ int Run(const cli::Options& o)
       }
       timedMesh = std::move(out.back());
     }
-    timed = Summarise(t);
-    timedPeak = Summarise(p);
+    timed = cli::Summarise(t);
+    timedPeak = cli::Summarise(p);
     std::fprintf(stderr, "  timed    %8lld tets  RMS %8.3f  %.2f s  peak %.0f MB\n", timedMesh.NumberOfTets(),
       timedMesh.Rms, timed.median, timedPeak.median);
   }
 
   // JSON, markdown, chart.
   const std::string src = std::string(ART_DATA_DIR) + "/..";
-  const std::string commit = Shell("git -C '" + src + "' rev-parse --short HEAD 2>/dev/null");
-  const std::string cpu = Shell("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'");
+  const std::string commit = cli::GitCommit(src);
+  const std::string cpu = cli::CpuName();
   char date[64];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));

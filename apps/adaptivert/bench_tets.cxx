@@ -5,6 +5,7 @@
 // vtkFixedPointVolumeRayCastMapper on the voxels; every image scored (PSNR, SSIM, RMSE) against
 // the full-resolution voxel reference. The VTK mappers need a display (run under xvfb-run -a).
 #include "Bench.h"
+#include "BenchUtil.h"
 #include "Camera.h"
 #include "Command.h"
 #include "DataLoader.h"
@@ -54,48 +55,11 @@
 
 namespace
 {
-struct Stats
-{
-  double median = 0, lo = 0, hi = 0;
-};
-
-Stats Timed(int runs, const std::function<double()>& once)
-{
-  once(); // warm-up
-  std::vector<double> v;
-  for (int i = 0; i < runs; ++i)
-  {
-    v.push_back(once());
-  }
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return { n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]), v.front(), v.back() };
-}
-
-std::string Shell(const std::string& cmd)
-{
-  std::string out;
-  if (FILE* p = popen(cmd.c_str(), "r"))
-  {
-    char buf[256];
-    while (std::fgets(buf, sizeof buf, p))
-    {
-      out += buf;
-    }
-    pclose(p);
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == ' '))
-  {
-    out.pop_back();
-  }
-  return out;
-}
-
 struct Row
 {
   std::string method, mesh;
   long long tets = 0, vertices = 0;
-  Stats seconds;
+  cli::BenchStats seconds;
   art::ImageMetricsResult err;
   double tetsPerRay = 0, nsPerTet = 0;
 };
@@ -132,7 +96,7 @@ vtkSmartPointer<vtkUnstructuredGrid> ToGrid(const art::TetMesh& m)
 }
 
 // Renders `mapper` in an offscreen window with the shared camera: median seconds and the image.
-Stats RenderVTK(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* prop, vtkCamera* cam, int w, int h, int runs,
+cli::BenchStats RenderVTK(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* prop, vtkCamera* cam, int w, int h, int runs,
   art::Image& img)
 {
   vtkNew<vtkVolume> vol;
@@ -146,7 +110,7 @@ Stats RenderVTK(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* prop, vtkCam
   win->SetOffScreenRendering(1);
   win->SetSize(w, h);
   win->AddRenderer(ren);
-  const Stats s = Timed(runs, [&] {
+  const cli::BenchStats s = cli::TimeRuns(runs, [&] {
     vol->Modified(); // no cached image
     const auto t0 = std::chrono::steady_clock::now();
     win->Render();
@@ -285,7 +249,7 @@ int Run(const cli::Options& o)
       art::Image img;
       art::RenderStats st;
       Row r{ v.name, me.name, static_cast<long long>(m.NumberOfTets()), static_cast<long long>(m.NumberOfPoints()) };
-      r.seconds = Timed(runs, [&] {
+      r.seconds = cli::TimeRuns(runs, [&] {
         st = caster.Render(camera, img);
         return st.seconds;
       });
@@ -335,8 +299,8 @@ int Run(const cli::Options& o)
 
   // JSON, markdown, chart.
   const std::string src = std::string(ART_DATA_DIR) + "/..";
-  const std::string commit = Shell("git -C '" + src + "' rev-parse --short HEAD 2>/dev/null");
-  const std::string cpu = Shell("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'");
+  const std::string commit = cli::GitCommit(src);
+  const std::string cpu = cli::CpuName();
   char date[64];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));

@@ -1,0 +1,65 @@
+#include "BenchUtil.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace cli
+{
+namespace
+{
+std::string Shell(const std::string& cmd)
+{
+  std::string out;
+  if (FILE* p = popen(cmd.c_str(), "r"))
+  {
+    char buf[256];
+    while (std::fgets(buf, sizeof buf, p))
+    {
+      out += buf;
+    }
+    pclose(p);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r' || out.back() == ' '))
+  {
+    out.pop_back();
+  }
+  return out;
+}
+}
+
+BenchStats Summarise(std::vector<double> v)
+{
+  BenchStats s;
+  if (v.empty())
+  {
+    return s;
+  }
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  s.median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  s.lo = v.front();
+  s.hi = v.back();
+  return s;
+}
+
+BenchStats TimeRuns(int runs, const std::function<double()>& once)
+{
+  once(); // warm-up
+  std::vector<double> v;
+  for (int i = 0; i < runs; ++i)
+  {
+    v.push_back(once());
+  }
+  return Summarise(std::move(v));
+}
+
+std::string GitCommit(const std::string& sourceDir)
+{
+  return Shell("git -C '" + sourceDir + "' rev-parse --short HEAD 2>/dev/null");
+}
+
+std::string CpuName()
+{
+  return Shell("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'");
+}
+} // namespace cli

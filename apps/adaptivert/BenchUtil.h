@@ -1,0 +1,26 @@
+// BenchUtil: what every benchmark target shares: medians with their min-max over timed runs
+// after a warm-up (CONVENTIONS.md, Benchmarks), and the machine and commit a result belongs to.
+#ifndef adaptivert_BenchUtil_h
+#define adaptivert_BenchUtil_h
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cli
+{
+struct BenchStats
+{
+  double median = 0, lo = 0, hi = 0;
+};
+
+BenchStats Summarise(std::vector<double> v);
+/// One warm-up call, then `runs` calls; each returns the seconds it measured.
+BenchStats TimeRuns(int runs, const std::function<double()>& once);
+/// Short commit of the source tree at `sourceDir` ("" when it is not a git checkout).
+std::string GitCommit(const std::string& sourceDir);
+/// The CPU's model name.
+std::string CpuName();
+} // namespace cli
+
+#endif
