@@ -5,6 +5,7 @@
 #ifdef ART_HAVE_TriangleGrid
 #include "Accelerator.h"
 #include "Bench.h"
+#include "BenchUtil.h"
 #include "Camera.h"
 #include "Command.h"
 #include "DataLoader.h"
@@ -42,56 +43,26 @@ namespace
 {
 using Clock = std::chrono::steady_clock;
 
-struct Stats
-{
-  double median = 0, lo = 0, hi = 0;
-};
-
 double Since(Clock::time_point t0)
 {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
 // Median of `runs` timings after one warm-up run.
-Stats Time(int runs, const std::function<void()>& fn)
+cli::BenchStats Time(int runs, const std::function<void()>& fn)
 {
-  fn();
-  std::vector<double> v;
-  for (int i = 0; i < runs; ++i)
-  {
+  return cli::TimeRuns(runs, [&] {
     const auto t0 = Clock::now();
     fn();
-    v.push_back(Since(t0));
-  }
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return { n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]), v.front(), v.back() };
+    return Since(t0);
+  });
 }
 
 // Seconds -> Mrays/s (the median of rates is the rate of the median time; min-max swap).
-Stats Rate(const Stats& s, size_t rays)
+cli::BenchStats Rate(const cli::BenchStats& s, size_t rays)
 {
   const double r = double(rays) / 1e6;
   return { r / s.median, r / s.hi, r / s.lo };
-}
-
-std::string Shell(const std::string& cmd)
-{
-  std::string out;
-  if (FILE* p = popen(cmd.c_str(), "r"))
-  {
-    char buf[256];
-    while (std::fgets(buf, sizeof buf, p))
-    {
-      out += buf;
-    }
-    pclose(p);
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == ' '))
-  {
-    out.pop_back();
-  }
-  return out;
 }
 
 struct Scene
@@ -108,7 +79,7 @@ struct Row
 {
   std::string scene, engine, group; // group: ours, anchor, table
   double buildMs = 0, bytesPerTri = -1;
-  Stats prim1, prim2, shad1, shad2, all1;
+  cli::BenchStats prim1, prim2, shad1, shad2, all1;
   bool havePrim2 = false, haveShadow = false, haveAll = false;
   double voxelsPerRay = -1, trisPerRay = -1;
   size_t rays = 0;     // primary rays timed
@@ -328,14 +299,14 @@ std::string Fmt(double v, int prec = 2)
   return buf;
 }
 
-std::string FmtStats(const Stats& s)
+std::string FmtStats(const cli::BenchStats& s)
 {
   char buf[96];
   std::snprintf(buf, sizeof buf, "%.3g (%.3g-%.3g)", s.median, s.lo, s.hi);
   return buf;
 }
 
-cli::Json StatsJson(const Stats& s)
+cli::Json StatsJson(const cli::BenchStats& s)
 {
   cli::Json j;
   j.Set("median", s.median).Set("min", s.lo).Set("max", s.hi);
@@ -611,7 +582,7 @@ int Run(const cli::Options& o)
       r.engine = "Embree 3 rtcIntersect1/rtcOccluded1";
       r.group = "anchor";
       std::unique_ptr<EmbreeScene> es;
-      const Stats b = Time(runs, [&] { es.reset(); es.reset(new EmbreeScene(*s.store)); });
+      const cli::BenchStats b = Time(runs, [&] { es.reset(); es.reset(new EmbreeScene(*s.store)); });
       r.buildMs = b.median * 1e3;
       r.bytesPerTri = double(es->bytes) / ntri;
       const Engine e = es->Queries();
@@ -641,7 +612,7 @@ int Run(const cli::Options& o)
         r.group = "anchor";
         loc->SetDataSet(s.pd);
         loc->LazyEvaluationOff();
-        const Stats b = Time(std::min(runs, 3), [&] { loc->FreeSearchStructure(); loc->Modified(); loc->BuildLocator(); });
+        const cli::BenchStats b = Time(std::min(runs, 3), [&] { loc->FreeSearchStructure(); loc->Modified(); loc->BuildLocator(); });
         r.buildMs = b.median * 1e3;
         const Engine e = VTKEngine(loc, far);
         art::SetThreadCount(1);
@@ -723,7 +694,7 @@ int Run(const cli::Options& o)
       r.scene = s.name;
       r.group = cfg.group;
       std::unique_ptr<art::Accelerator> acc;
-      const Stats b = Time(runs, [&] { acc.reset(); acc = art::MakeAccelerator(s.store, cfg.o); });
+      const cli::BenchStats b = Time(runs, [&] { acc.reset(); acc = art::MakeAccelerator(s.store, cfg.o); });
       r.engine = acc->Name();
       r.buildMs = b.median * 1e3;
       r.bytesPerTri = double(acc->MemoryBytes() + s.store->MemoryBytes()) / ntri;
@@ -830,8 +801,8 @@ int Run(const cli::Options& o)
   }
 
   const std::string src = std::string(ART_DATA_DIR) + "/..";
-  const std::string commit = Shell("git -C '" + src + "' rev-parse --short HEAD 2>/dev/null");
-  const std::string cpu = Shell("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'");
+  const std::string commit = cli::GitCommit(src);
+  const std::string cpu = cli::CpuName();
   char date[64];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));

@@ -189,9 +189,9 @@ int Run(const cli::Options& o, const std::string& input)
     cli::Json j;
     j.Set("input", input).Set("output", view.output).Set("width", view.width).Set("height", view.height);
     j.Set("accelerator", acc->Name()).Set("triangles", static_cast<long long>(store->Size()));
-    j.Set("buildSeconds", buildSeconds).Set("renderSeconds", seconds).Set("rays", static_cast<long long>(c.rays));
-    j.Set("mraysPerSecond", mrays).Set("memoryMB", mb).Set("threads", art::GetThreadCount());
-    j.Set("voxelsPerRay", c.PerRay(c.voxelsVisited)).Set("trianglesPerRay", c.PerRay(c.trianglesTested));
+    j.Set("build_seconds", buildSeconds).Set("render_seconds", seconds).Set("rays", static_cast<long long>(c.rays));
+    j.Set("mrays_per_second", mrays).Set("memory_mb", mb).Set("threads", art::GetThreadCount());
+    j.Set("voxels_per_ray", c.PerRay(c.voxelsVisited)).Set("triangles_per_ray", c.PerRay(c.trianglesTested));
     j.Set("lights", static_cast<long long>(s.lights.size())).Set("opacity", s.opacity);
     std::printf("%s\n", j.Str().c_str());
     return cli::ExitOk;
