@@ -3,6 +3,7 @@
 #include "EntryFinder.h"
 #include "ExactIntegrator.h"
 #include "ParallelTiles.h"
+#include "Progress.h"
 #include "TetWalker.h"
 #include "Accelerator.h"
 #include "TriangleStore.h"
@@ -198,6 +199,10 @@ struct TetRayCaster::Impl
     img = Image(cam.Width(), cam.Height());
     const EntryFinder finder(rc.M, cam);
     std::atomic<std::uint64_t> nudges{ 0 };
+    if (p)
+    {
+      p->Begin("render", double(cam.Width()) * cam.Height()); // ForEachTile counts pixels
+    }
     RenderStats st;
     st.counters = ForEachTile(cam.Width(), cam.Height(), rc.S.tileSize,
       [&](const Tile& tile, Counters& c) {

@@ -3,6 +3,7 @@
 #include "Error.h"
 #include "ExactIntegrator.h"
 #include "ParallelTiles.h"
+#include "Progress.h"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -71,6 +72,10 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
   img = Image(cam.Width(), cam.Height());
   const double step = std::min(H.x, std::min(H.y, H.z)) / PerVoxel;
   const ExactIntegrator rule(TF);
+  if (progress)
+  {
+    progress->Begin("reference", double(cam.Width()) * cam.Height()); // ForEachTile counts pixels
+  }
   RenderStats st;
   st.counters = ForEachTile(cam.Width(), cam.Height(), 16,
     [&](const Tile& tile, Counters& c) {
