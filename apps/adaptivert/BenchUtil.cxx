@@ -1,4 +1,6 @@
 #include "BenchUtil.h"
+#include "Error.h"
+#include "Subprocess.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -61,5 +63,14 @@ std::string GitCommit(const std::string& sourceDir)
 std::string CpuName()
 {
   return Shell("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'");
+}
+void FinishResults(const std::string& chartScript, const std::string& stem)
+{
+  const auto r = RunProgram({ "/usr/bin/python3", chartScript, stem + ".json", stem + ".png" }, "");
+  if (r.exitCode != 0)
+  {
+    throw art::Error("the chart script failed", chartScript);
+  }
+  std::printf("\nresults      %s.json, %s.md, %s.png\n", stem.c_str(), stem.c_str(), stem.c_str());
 }
 } // namespace cli

@@ -21,6 +21,9 @@ BenchStats TimeRuns(int runs, const std::function<double()>& once);
 std::string GitCommit(const std::string& sourceDir);
 /// The CPU's model name.
 std::string CpuName();
+/// Draws STEM.png from STEM.json with a matplotlib script (throws art::Error naming the script
+/// when it fails) and prints where the JSON, markdown table and chart are.
+void FinishResults(const std::string& chartScript, const std::string& stem);
 } // namespace cli
 
 #endif

@@ -35,7 +35,7 @@ SubprocessResult RunProgram(const std::vector<std::string>& argv, const std::str
     dup2(pipefd[1], STDOUT_FILENO);
     close(pipefd[0]);
     close(pipefd[1]);
-    const int err = open(stderrLog.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = stderrLog.empty() ? -1 : open(stderrLog.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (err >= 0)
     {
       dup2(err, STDERR_FILENO);

@@ -1,5 +1,6 @@
 // Subprocess: runs a program (no shell, so no quoting issues) and captures its stdout; its
-// stderr goes to a log file. Used by `batch` so one failing frame cannot take the batch down.
+// stderr goes to a log file, or stays the caller's when the log path is empty. `batch` runs each
+// frame this way so one failing frame cannot take the batch down.
 #ifndef adaptivert_Subprocess_h
 #define adaptivert_Subprocess_h
 

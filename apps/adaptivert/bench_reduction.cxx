@@ -335,13 +335,7 @@ int Run(const cli::Options& o)
   std::ofstream(stem + ".md") << md.str();
   std::printf("%s", md.str().c_str());
 
-  const std::string script = src + "/tests/benchmarks/reduction_chart.py";
-  const int rc = std::system(("/usr/bin/python3 '" + script + "' '" + stem + ".json' '" + stem + ".png'").c_str());
-  if (rc != 0)
-  {
-    throw art::Error("the chart script failed", script);
-  }
-  std::printf("\nresults: %s.json, %s.md, %s.png\n", stem.c_str(), stem.c_str(), stem.c_str());
+  cli::FinishResults(src + "/tests/benchmarks/reduction_chart.py", stem);
   return cli::ExitOk;
 }
 

@@ -852,16 +852,11 @@ int Run(const cli::Options& o)
       f << "\n";
     }
   }
-  const std::string script = src + "/tests/benchmarks/triangles_chart.py";
-  const int rc = std::system(("/usr/bin/python3 '" + script + "' '" + stem + ".json' '" + stem + ".png'").c_str());
-  if (rc != 0)
-  {
-    throw art::Error("the chart script failed", script);
-  }
+
   std::printf("## Ratios: our recursive grid / anchor\n\n| scene | triangles | closest vs Embree 1T | 2T | shadow vs Embree | "
               "all hits vs Embree | closest vs vtkStaticCellLocator |\n|---|---:|---:|---:|---:|---:|---:|\n%s\n",
     ratioText.c_str());
-  std::printf("results      %s.json, %s.md, %s.png\n", stem.c_str(), stem.c_str(), stem.c_str());
+  cli::FinishResults(src + "/tests/benchmarks/triangles_chart.py", stem);
   return cli::ExitOk;
 }
 
