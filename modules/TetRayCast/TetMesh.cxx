@@ -1,4 +1,5 @@
 #include "TetMesh.h"
+#include "Morton.h"
 
 #include "Error.h"
 
@@ -261,17 +262,6 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
 
 namespace
 {
-// Interleaves the low 21 bits of x, y, z (a Morton / Z-order code).
-std::uint64_t Spread(std::uint64_t v)
-{
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffULL;
-  v = (v | v << 16) & 0x1f0000ff0000ffULL;
-  v = (v | v << 8) & 0x100f00f00f00f00fULL;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-  v = (v | v << 2) & 0x1249249249249249ULL;
-  return v;
-}
 } // namespace
 
 void TetMesh::SortForLocality()
@@ -283,16 +273,7 @@ void TetMesh::SortForLocality()
   {
     box.Expand(p);
   }
-  const Vec3 size = box.Size();
-  auto code = [&](const Vec3& p) {
-    std::uint64_t c[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      const double u = size[a] > 0 ? (p[a] - box.lo[a]) / size[a] : 0.0;
-      c[a] = static_cast<std::uint64_t>(std::min(std::max(u, 0.0), 1.0) * 2097151.0);
-    }
-    return Spread(c[0]) | Spread(c[1]) << 1 | Spread(c[2]) << 2;
-  };
+  auto code = [&](const Vec3& p) { return MortonCode(p, box); };
   std::vector<std::pair<std::uint64_t, int>> order(Points.size());
   for (std::size_t i = 0; i < Points.size(); ++i)
   {

@@ -1,4 +1,5 @@
 #include "TriangleStore.h"
+#include "Morton.h"
 
 #include "Error.h"
 
@@ -102,16 +103,6 @@ void TriangleStore::Build(std::vector<Vec3> points, const std::vector<std::array
   // in one voxel then touch neighbouring cache lines.
   {
     std::vector<std::pair<std::uint64_t, size_t>> runs; // (morton, first index)
-    const Vec3 lo = Box.lo, ext = Box.Size();
-    auto spread = [](std::uint64_t v) {
-      v &= 0x1fffff;
-      v = (v | v << 32) & 0x1f00000000ffffULL;
-      v = (v | v << 16) & 0x1f0000ff0000ffULL;
-      v = (v | v << 8) & 0x100f00f00f00f00fULL;
-      v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-      v = (v | v << 2) & 0x1249249249249249ULL;
-      return v;
-    };
     for (size_t i = 0; i < cands.size(); ++i)
     {
       if (i > 0 && std::equal(cands[i].key, cands[i].key + 4, cands[i - 1].key))
@@ -119,14 +110,12 @@ void TriangleStore::Build(std::vector<Vec3> points, const std::vector<std::array
         continue;
       }
       const auto& t = triangles[cands[i].src];
-      std::uint64_t code = 0;
+      Vec3 centroid;
       for (int a = 0; a < 3; ++a)
       {
-        const double c = (float(Pts[t[0]][a]) + float(Pts[t[1]][a]) + float(Pts[t[2]][a])) / 3.0;
-        const double f = ext[a] > 0 ? (c - lo[a]) / ext[a] : 0.0;
-        code |= spread(static_cast<std::uint64_t>(std::min(std::max(f, 0.0), 1.0) * 2097151.0)) << a;
+        centroid[a] = (float(Pts[t[0]][a]) + float(Pts[t[1]][a]) + float(Pts[t[2]][a])) / 3.0;
       }
-      runs.emplace_back(code, i);
+      runs.emplace_back(MortonCode(centroid, Box), i);
     }
     std::stable_sort(runs.begin(), runs.end());
     std::vector<Cand> ordered;
