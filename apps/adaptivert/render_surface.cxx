@@ -141,15 +141,8 @@ int Run(const cli::Options& o, const std::string& input)
   else
   {
     // A headlight, and a key light above and to the left of the camera, which casts shadows.
-    double pos[3], fp[3], up[3];
-    vcam->GetPosition(pos);
-    vcam->GetFocalPoint(fp);
-    vcam->GetViewUp(up);
-    const art::Vec3 eye(pos), fwd = art::Vec3(fp) - eye, u = art::Normalize(art::Vec3(up));
-    const art::Vec3 right = art::Normalize(art::Cross(fwd, u));
-    const double d = art::Length(fwd);
-    s.lights.push_back({ eye, 0.35 });
-    s.lights.push_back({ eye + u * (0.6 * d) - right * (0.5 * d), 0.6 });
+    s.lights = art::HeadAndKeyLights(
+      art::Vec3(vcam->GetPosition()), art::Vec3(vcam->GetFocalPoint()), art::Vec3(vcam->GetViewUp()));
   }
   std::vector<std::array<float, 3>> colors;
   if (vtkDataArray* sc = pd->GetPointData()->GetScalars())

@@ -85,16 +85,9 @@ void SurfaceTraceView::Trace(vtkRenderer* ren)
   const int w = std::max(1, size[0] / Sample), h = std::max(1, size[1] / Sample);
   vtkCamera* vcam = ren->GetActiveCamera();
   // A headlight and a key light above-left of the camera (the CLI's default lights).
-  double pos[3], fp[3], up[3];
-  vcam->GetPosition(pos);
-  vcam->GetFocalPoint(fp);
-  vcam->GetViewUp(up);
-  const art::Vec3 eye(pos), fwd = art::Vec3(fp) - eye, u = art::Normalize(art::Vec3(up));
-  const art::Vec3 right = art::Normalize(art::Cross(fwd, u));
-  const double d = art::Length(fwd);
   art::SurfaceTracerSettings s;
-  s.lights.push_back({ eye, 0.35 });
-  s.lights.push_back({ eye + u * (0.6 * d) - right * (0.5 * d), 0.6 });
+  s.lights = art::HeadAndKeyLights(
+    art::Vec3(vcam->GetPosition()), art::Vec3(vcam->GetFocalPoint()), art::Vec3(vcam->GetViewUp()));
   art::SurfaceTracer tracer(*Impl->Acc, s);
   if (!Impl->Colors.empty())
   {

@@ -8,6 +8,14 @@
 
 namespace art
 {
+std::vector<PointLight> HeadAndKeyLights(const Vec3& eye, const Vec3& focalPoint, const Vec3& viewUp)
+{
+  const Vec3 fwd = focalPoint - eye, u = Normalize(viewUp);
+  const Vec3 right = Normalize(Cross(fwd, u));
+  const double d = Length(fwd);
+  return { { eye, 0.35 }, { eye + u * (0.6 * d) - right * (0.5 * d), 0.6 } };
+}
+
 SurfaceTracer::SurfaceTracer(const Accelerator& acc, SurfaceTracerSettings s)
   : Acc(acc)
   , S(std::move(s))

@@ -34,6 +34,11 @@ struct SurfaceTracerSettings
   int maxLayers = 32; ///< transparent surfaces composited per view ray at most
 };
 
+/// The default lighting of the CLI and the viewer: a headlight at the eye and a shadow-casting key
+/// light above and to the left of the camera, both scaled to the eye's distance from the focus.
+ADAPTIVERTTRIANGLEGRID_EXPORT std::vector<PointLight> HeadAndKeyLights(
+  const Vec3& eye, const Vec3& focalPoint, const Vec3& viewUp);
+
 class ADAPTIVERTTRIANGLEGRID_EXPORT SurfaceTracer
 {
 public:
