@@ -12,6 +12,10 @@
 #include "ReducerVTK.h"
 #include "TetReducer.h"
 
+#ifdef ART_HAVE_TetRayCast
+#include "TransferFunction.h"
+#endif
+
 #include <vtkImageData.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -57,6 +61,9 @@ void Declare(cli::Options& o)
   o.Add("levels", 0, "LIST", "also write nested levels from the same run, e.g. 0.01%,0.1%,5000: OUT_<n>.vtu");
   o.Add("refine-fraction", 0, "F", "tet growth per refinement level", "0.2");
   o.Add("tolerance", 0, "T", "conjugate-gradient relative residual", "1e-8");
+  o.Add("tf", 0, "NAME|FILE",
+    "reduce for this transfer function's opacity (a preset, e.g. ct-skin-bone, or a file of "
+    "'scalar r g b opacity' lines): tets go where opacity changes");
 }
 
 int Run(const cli::Options& o)
@@ -92,6 +99,21 @@ int Run(const cli::Options& o)
   auto image = art::LoadVolume(in);
   const art::VoxelVolume volume = art::VolumeFromImage(image, in);
   const long long voxels = volume.NumberOfVoxels();
+  if (o.Has("tf"))
+  {
+#ifdef ART_HAVE_TetRayCast
+    const std::string tf = o.Get("tf");
+    const bool file = std::filesystem::exists(tf) || tf.find('.') != std::string::npos || tf.find('/') != std::string::npos;
+    const art::TransferFunction f =
+      file ? art::TransferFunction::FromFile(tf) : art::TransferFunction::Preset(tf, volume.Range[0], volume.Range[1]);
+    for (const auto& n : f.Nodes())
+    {
+      opt.ScalarOpacity.emplace_back(n.s, n.alpha);
+    }
+#else
+    throw cli::UsageError("--tf needs the TetRayCast module (transfer functions), which is not in this build");
+#endif
+  }
   if (o.Has("tets"))
   {
     opt.TargetTets = ParseBudget(o.Get("tets"), voxels, "--tets");
@@ -162,6 +184,10 @@ int Run(const cli::Options& o)
       .Set("target_tets", m.TargetTets).Set("rms_error", m.Rms).Set("max_error", m.Max)
       .Set("rms_error_percent", m.Rms * pct).Set("max_error_percent", m.Max * pct)
       .Set("build_seconds", m.BuildSeconds).Set("target_reached", m.TargetReached);
+    if (m.Weighted)
+    {
+      j.Set("weighted_rms_error", m.WeightedRms).Set("weighted_max_error", m.WeightedMax);
+    }
     levels.push_back(j);
     if (!json)
     {
@@ -186,7 +212,12 @@ int Run(const cli::Options& o)
       .Set("max_error_percent", f.Max * pct).Set("build_seconds", f.BuildSeconds)
       .Set("target_reached", f.TargetReached).Set("scalar_range", std::vector<double>{ volume.Range[0], volume.Range[1] })
       .Set("min_dihedral_degrees", q.MinDihedralDegrees).Set("min_radius_ratio", q.MinRadiusRatio)
-      .Set("mean_radius_ratio", q.MeanRadiusRatio).Set("levels", levels);
+      .Set("mean_radius_ratio", q.MeanRadiusRatio).Set("weighted", f.Weighted);
+    if (f.Weighted)
+    {
+      j.Set("weighted_rms_error", f.WeightedRms).Set("weighted_max_error", f.WeightedMax);
+    }
+    j.Set("levels", levels);
     std::printf("%s\n", j.Str().c_str());
   }
   else
@@ -197,6 +228,11 @@ int Run(const cli::Options& o)
       Grouped(f.NumberOfVertices()).c_str(), 100.0 * f.NumberOfTets() / voxels);
     std::printf("error        RMS %.4g, max %.4g data units (%.3f%% / %.2f%% of the range)\n", f.Rms, f.Max,
       f.Rms * pct, f.Max * pct);
+    if (f.Weighted)
+    {
+      std::printf("weighted     RMS %.4g, max %.4g data units (opacity-weighted error of --tf %s)\n", f.WeightedRms,
+        f.WeightedMax, o.Get("tf").c_str());
+    }
     std::printf("quality      min dihedral %.1f deg, radius ratio min %.3f mean %.3f, 0 inverted, conforming\n",
       q.MinDihedralDegrees, q.MinRadiusRatio, q.MeanRadiusRatio);
     std::printf("time         %.2f s\n", f.BuildSeconds);
@@ -209,7 +245,8 @@ cli::Registrar reg({ "reduce",
   "adaptivert reduce [options] IN OUT.vtu",
   "  adaptivert reduce data/ct-head-128.mha head.vtu --tets 20000\n"
   "  adaptivert reduce head.mha head.vtu --max-error 1% --metric rms\n"
-  "  adaptivert reduce head.mha head.vtu --tets 1% --levels 0.01%,0.1%   (writes head_<n>.vtu too)\n",
+  "  adaptivert reduce head.mha head.vtu --tets 1% --levels 0.01%,0.1%   (writes head_<n>.vtu too)\n"
+  "  adaptivert reduce data/ct-head-128.mha head.vtu --tets 50000 --tf ct-skin-bone\n",
   Declare, Run });
 } // namespace
 #endif

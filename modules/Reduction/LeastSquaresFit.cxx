@@ -53,13 +53,23 @@ int LeastSquaresFit::PackedIndex(int a, int b)
   return idx[a][b];
 }
 
-LeastSquaresFit::LeastSquaresFit(const VoxelVolume& volume, double regularization)
+LeastSquaresFit::LeastSquaresFit(const VoxelVolume& volume, double regularization, const OpacityImportance* importance)
   : Volume(volume)
   , Regularization(regularization)
+  , Imp(importance)
 {
 }
 
-TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t) const
+void LeastSquaresFit::Extend(const BisectionMesh& mesh, std::vector<double>& x)
+{
+  for (int v = static_cast<int>(x.size()); v < mesh.NumberOfVertices(); ++v)
+  {
+    const auto& p = mesh.Parents(v);
+    x.push_back(p[0] >= 0 ? 0.5 * (x[p[0]] + x[p[1]]) : 0.0);
+  }
+}
+
+TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t, const std::vector<double>* fit) const
 {
   LatticePoint P[4];
   Corners(mesh, t, P);
@@ -69,21 +79,42 @@ TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t) const
     throw Error("internal: a flat tetrahedron in the bisection mesh");
   }
   TetMoments m;
+  double plainDiag[4] = { 0, 0, 0, 0 }, sumW = 0; // unweighted: is the tet pinned by its voxels?
+  double c[4] = { 0, 0, 0, 0 };
+  const bool haveFit = Imp && fit && !fit->empty();
+  if (haveFit)
+  {
+    for (int a = 0; a < 4; ++a)
+    {
+      c[a] = (*fit)[mesh.Tet(t)[a]];
+    }
+  }
   auto accumulate = [&](const auto* values) {
     r.ForEachVoxel(Volume.Dims, [&](long long idx, const double* l) {
-      const double f = values[idx];
+      double f = values[idx], w = 1.0;
+      if (Imp)
+      {
+        const double u = haveFit ? c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3] : f;
+        w = Imp->Weight(idx, f, u);
+      }
       if (m.Count++ == 0)
       {
         m.F0 = f;
       }
+      sumW += w;
       const double d = f - m.F0;
-      m.G += d * d;
-      m.M[0] += l[0] * l[0], m.M[1] += l[0] * l[1], m.M[2] += l[0] * l[2], m.M[3] += l[0] * l[3];
-      m.M[4] += l[1] * l[1], m.M[5] += l[1] * l[2], m.M[6] += l[1] * l[3];
-      m.M[7] += l[2] * l[2], m.M[8] += l[2] * l[3], m.M[9] += l[3] * l[3];
+      m.G += w * d * d;
       for (int a = 0; a < 4; ++a)
       {
-        m.Bf[a] += l[a] * d;
+        plainDiag[a] += l[a] * l[a];
+      }
+      const double wl[4] = { w * l[0], w * l[1], w * l[2], w * l[3] };
+      m.M[0] += wl[0] * l[0], m.M[1] += wl[0] * l[1], m.M[2] += wl[0] * l[2], m.M[3] += wl[0] * l[3];
+      m.M[4] += wl[1] * l[1], m.M[5] += wl[1] * l[2], m.M[6] += wl[1] * l[3];
+      m.M[7] += wl[2] * l[2], m.M[8] += wl[2] * l[3], m.M[9] += wl[3] * l[3];
+      for (int a = 0; a < 4; ++a)
+      {
+        m.Bf[a] += wl[a] * d;
       }
     });
   };
@@ -95,19 +126,21 @@ TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t) const
   {
     accumulate(Volume.Float.data());
   }
-  m.Regularize = m.Count < RegularizeBelow || m.M[0] < 0.5 || m.M[4] < 0.5 || m.M[7] < 0.5 || m.M[9] < 0.5;
+  m.Regularize = m.Count < RegularizeBelow || plainDiag[0] < 0.5 || plainDiag[1] < 0.5 || plainDiag[2] < 0.5 ||
+    plainDiag[3] < 0.5;
+  m.MeanWeight = m.Count > 0 ? sumW / m.Count : 1.0;
   const double S = static_cast<double>(BisectionMesh::Scale);
   m.Volume = static_cast<double>(r.SixVolume()) / 6.0 / (S * S * S);
   return m;
 }
 
-void LeastSquaresFit::UpdateMoments(const BisectionMesh& mesh, const std::vector<int>& tets)
+void LeastSquaresFit::UpdateMoments(const BisectionMesh& mesh, const std::vector<int>& tets, const std::vector<double>* fit)
 {
   Mom.resize(static_cast<size_t>(mesh.NumberOfTets()));
   ForEachRange(static_cast<long long>(tets.size()), 64, [&](long long b, long long e, Counters&) {
     for (long long i = b; i < e; ++i)
     {
-      Mom[tets[i]] = Gather(mesh, tets[i]);
+      Mom[tets[i]] = Gather(mesh, tets[i], fit);
     }
   });
 }
@@ -115,11 +148,7 @@ void LeastSquaresFit::UpdateMoments(const BisectionMesh& mesh, const std::vector
 int LeastSquaresFit::Solve(const BisectionMesh& mesh, std::vector<double>& x, double tolerance, int maxIterations)
 {
   const int nv = mesh.NumberOfVertices();
-  for (int v = static_cast<int>(x.size()); v < nv; ++v)
-  {
-    const auto& p = mesh.Parents(v); // new vertices start on the previous fit: exact warm start
-    x.push_back(p[0] >= 0 ? 0.5 * (x[p[0]] + x[p[1]]) : 0.0);
-  }
+  Extend(mesh, x); // new vertices start on the previous fit: exact warm start
   const std::vector<double> anchor = x; // the previous fit, interpolated onto new vertices
   // CSR rows assembled independently, each from the tets around its vertex, in a fixed order.
   std::vector<std::vector<int>> cols(nv);
@@ -152,7 +181,8 @@ int LeastSquaresFit::Solve(const BisectionMesh& mesh, std::vector<double>& x, do
           const int p = PackedIndex(a, b);
           rowSum += m.M[p];
           // Continuous P1 mass matrix: volume / 20 * (1 + delta_ab).
-          const double mc = m.Regularize ? Regularization * m.Volume / 20.0 * (a == b ? 2.0 : 1.0) : 0.0;
+          const double mc =
+            m.Regularize ? Regularization * m.MeanWeight * m.Volume / 20.0 * (a == b ? 2.0 : 1.0) : 0.0;
           val[std::lower_bound(c.begin(), c.end(), tv[b]) - c.begin()] += m.M[p] + mc;
           bv += mc * anchor[tv[b]];
         }
@@ -257,13 +287,16 @@ void LeastSquaresFit::SquaredErrors(const BisectionMesh& mesh, const std::vector
   });
 }
 
-void LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const std::vector<double>& x,
-  std::vector<double>& rms, std::vector<double>& maxErr, double& globalRms, double& globalMax) const
+VoxelErrorReport LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const std::vector<double>& x) const
 {
   const int nt = mesh.NumberOfTets();
-  rms.assign(nt, 0.0);
-  maxErr.assign(nt, 0.0);
+  VoxelErrorReport out;
+  out.TetRms.assign(nt, 0.0);
+  out.TetMax.assign(nt, 0.0);
+  out.TetWeightedMax.assign(nt, 0.0);
+  out.TetWeightedSse.assign(nt, 0.0);
   std::vector<double> sse(nt, 0.0);
+  std::vector<double>& wsse = out.TetWeightedSse;
   ForEachRange(nt, 64, [&](long long t0, long long t1, Counters&) {
     for (long long t = t0; t < t1; ++t)
     {
@@ -276,13 +309,17 @@ void LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const std::vector<d
       {
         c[a] = x[mesh.Tet(static_cast<int>(t))[a]];
       }
-      double s = 0, mx = 0;
+      double s = 0, ws = 0, mx = 0, wmx = 0;
       long long n = 0;
       auto pass = [&](const auto* values) {
         r.ForEachVoxel(Volume.Dims, [&](long long idx, const double* l) {
-          const double e = values[idx] - (c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3]);
+          const double u = c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3];
+          const double e = values[idx] - u;
+          const double e2 = Imp ? Imp->Error2(idx, values[idx], u) : e * e;
           s += e * e;
+          ws += e2;
           mx = std::max(mx, std::fabs(e));
+          wmx = std::max(wmx, e2);
           ++n;
         });
       };
@@ -295,17 +332,23 @@ void LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const std::vector<d
         pass(Volume.Float.data());
       }
       sse[t] = s;
-      rms[t] = n ? std::sqrt(s / n) : 0.0;
-      maxErr[t] = mx;
+      wsse[t] = ws;
+      out.TetRms[t] = n ? std::sqrt(s / n) : 0.0;
+      out.TetMax[t] = mx;
+      out.TetWeightedMax[t] = std::sqrt(wmx);
     }
   });
-  double total = 0, mx = 0;
+  double total = 0, wtotal = 0;
   for (int t = 0; t < nt; ++t)
   {
     total += sse[t];
-    mx = std::max(mx, maxErr[t]);
+    wtotal += wsse[t];
+    out.Max = std::max(out.Max, out.TetMax[t]);
+    out.WeightedMax = std::max(out.WeightedMax, out.TetWeightedMax[t]);
   }
-  globalRms = std::sqrt(total / static_cast<double>(Volume.NumberOfVoxels()));
-  globalMax = mx;
+  const double nvox = static_cast<double>(Volume.NumberOfVoxels());
+  out.Rms = std::sqrt(total / nvox);
+  out.WeightedRms = std::sqrt(wtotal / nvox);
+  return out;
 }
 } // namespace art

@@ -1,11 +1,13 @@
 // LeastSquaresFit: the best piecewise-linear approximation of the voxel samples on a tet mesh in
 // the discrete L2 sense (Grosso, Luerig & Ertl, Vis '97, section 3): M c = b with
 // M_ij = sum_v phi_i(x_v) phi_j(x_v), b_i = sum_v phi_i(x_v) f_v, solved by Jacobi-preconditioned CG.
+// With per-voxel weights w_v (OpacityImportance) every sum carries w_v: a weighted L2 fit.
 #ifndef art_LeastSquaresFit_h
 #define art_LeastSquaresFit_h
 
 #include "AdaptiveRTReductionModule.h"
 #include "BisectionMesh.h"
+#include "OpacityImportance.h"
 #include "VoxelVolume.h"
 
 #include <vector>
@@ -15,12 +17,21 @@ namespace art
 /// What the fit needs from the voxels one tet owns, gathered once per tet.
 struct TetMoments
 {
-  double M[10] = {};  ///< packed upper triangle of sum lambda_a lambda_b
-  double Bf[4] = {};  ///< sum lambda_a (f - F0)
+  double M[10] = {};  ///< packed upper triangle of sum w lambda_a lambda_b
+  double Bf[4] = {};  ///< sum w lambda_a (f - F0)
   double Volume = 0;   ///< in voxel units, for the continuous mass regulariser
-  double F0 = 0, G = 0; ///< reference value (first voxel) and sum (f - F0)^2, against round-off
+  double F0 = 0, G = 0; ///< reference value (first voxel) and sum w (f - F0)^2, against round-off
+  double MeanWeight = 1; ///< mean voxel weight, scales the regulariser to the weighted fit
   int Count = 0;        ///< voxel centres owned
   bool Regularize = false; ///< too few voxels to pin its corners: add the anchor term
+};
+
+/// Errors over the voxels, plain and weighted (OpacityImportance::Error2; plain without weights).
+struct VoxelErrorReport
+{
+  std::vector<double> TetRms, TetMax, TetWeightedMax, TetWeightedSse;
+  double Rms = 0, Max = 0;                 ///< over every voxel, data units
+  double WeightedRms = 0, WeightedMax = 0; ///< sqrt(mean Error2), sqrt(max Error2)
 };
 
 class ADAPTIVERTREDUCTION_EXPORT LeastSquaresFit
@@ -29,27 +40,34 @@ public:
   /// `regularization` weights, on tets holding too few voxel centres, a continuous-mass term
   /// alpha * int_T (u - u_prev)^2 that anchors them to the previous (coarser) fit. Unlike a
   /// gradient penalty it does not bias a linear field, and it vanishes where the fit is good.
-  LeastSquaresFit(const VoxelVolume& volume, double regularization = 0.5);
+  /// `importance` (optional, prepared, kept by reference) weighs each voxel by
+  /// OpacityImportance::Weight at the current fit (`fit` of UpdateMoments), errors by Error2.
+  LeastSquaresFit(const VoxelVolume& volume, double regularization = 0.5,
+    const OpacityImportance* importance = nullptr);
 
-  /// Re-gathers the moments of the listed tets (new or replaced); sizes to the mesh.
-  void UpdateMoments(const BisectionMesh& mesh, const std::vector<int>& tets);
+  /// Re-gathers the moments of the listed tets (new or replaced); sizes to the mesh. With an
+  /// importance, `fit` (vertex values, Extend-ed to the mesh) is the point the weights are taken at.
+  void UpdateMoments(const BisectionMesh& mesh, const std::vector<int>& tets, const std::vector<double>* fit = nullptr);
+  /// New vertices take their parents' mean: the previous fit, exactly, on the refined mesh.
+  static void Extend(const BisectionMesh& mesh, std::vector<double>& x);
   /// Solves for vertex values `x` (warm start: its current content, resized with parents' mean).
   /// Returns CG iterations; stops at ||r|| <= tolerance ||b||.
   int Solve(const BisectionMesh& mesh, std::vector<double>& x, double tolerance, int maxIterations = 2000);
-  /// Per-tet sum of squared errors from the cached moments (no voxel pass).
+  /// Per-tet (weighted) sum of squared errors from the cached moments (no voxel pass).
   void SquaredErrors(const BisectionMesh& mesh, const std::vector<double>& x, std::vector<double>& sse) const;
-  /// Exact per-tet RMS and max |f - fit| over the voxels each tet owns (one pass over voxels).
-  void VoxelErrors(const BisectionMesh& mesh, const std::vector<double>& x, std::vector<double>& rms,
-    std::vector<double>& maxErr, double& globalRms, double& globalMax) const;
+  /// Exact per-tet RMS and max |f - fit| over the voxels each tet owns, and the global plain and
+  /// weighted errors (one pass over the voxels).
+  VoxelErrorReport VoxelErrors(const BisectionMesh& mesh, const std::vector<double>& x) const;
 
   const TetMoments& Moments(int t) const { return Mom[t]; }
   static int PackedIndex(int a, int b);
 
 private:
-  TetMoments Gather(const BisectionMesh& mesh, int t) const;
+  TetMoments Gather(const BisectionMesh& mesh, int t, const std::vector<double>* fit) const;
 
   const VoxelVolume& Volume;
   double Regularization;
+  const OpacityImportance* Imp;
   std::vector<TetMoments> Mom;
 };
 } // namespace art

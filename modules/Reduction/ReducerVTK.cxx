@@ -172,6 +172,9 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bo
   };
   field("rms_error", m.Rms);
   field("max_error", m.Max);
+  field("weighted", m.Weighted ? 1.0 : 0.0);
+  field("weighted_rms_error", m.WeightedRms);
+  field("weighted_max_error", m.WeightedMax);
   field("tets", static_cast<double>(nt));
   field("vertices", static_cast<double>(nv));
   field("build_seconds", m.BuildSeconds);

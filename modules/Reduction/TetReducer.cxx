@@ -3,10 +3,12 @@
 #include "BisectionMesh.h"
 #include "Error.h"
 #include "LeastSquaresFit.h"
+#include "OpacityImportance.h"
 #include "Progress.h"
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <numeric>
 
@@ -50,7 +52,13 @@ ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const Le
   const std::vector<double>& x)
 {
   ReducedMesh out;
-  fit.VoxelErrors(mesh, x, out.TetRms, out.TetMax, out.Rms, out.Max);
+  VoxelErrorReport e = fit.VoxelErrors(mesh, x);
+  out.TetRms = std::move(e.TetRms);
+  out.TetMax = std::move(e.TetMax);
+  out.Rms = e.Rms;
+  out.Max = e.Max;
+  out.WeightedRms = e.WeightedRms;
+  out.WeightedMax = e.WeightedMax;
   const int nv = mesh.NumberOfVertices(), nt = mesh.NumberOfTets();
   out.Points.resize(3 * static_cast<size_t>(nv));
   const double S = static_cast<double>(BisectionMesh::Scale);
@@ -137,12 +145,32 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   mesh.InitKuhn(volume.Dims, cubes);
   const int n0 = mesh.NumberOfTets();
 
-  LeastSquaresFit fit(volume, Opt.Regularization);
-  std::vector<int> touched(n0);
+  std::unique_ptr<OpacityImportance> importance;
+  if (!Opt.ScalarOpacity.empty())
+  {
+    importance = std::make_unique<OpacityImportance>(Opt.ScalarOpacity);
+    importance->Prepare(volume, Opt.ImportanceFloor, Opt.ImportanceRadius);
+  }
+  const bool weighted = importance != nullptr;
+  LeastSquaresFit fit(volume, Opt.Regularization, importance.get());
+  std::vector<int> touched(n0), all;
   std::iota(touched.begin(), touched.end(), 0);
   fit.UpdateMoments(mesh, touched);
   std::vector<double> x;
   int iterations = fit.Solve(mesh, x, Opt.SolverTolerance);
+  // The weighted fit is iteratively reweighted: the weights are taken at the current fit, so
+  // every tet's moments are re-gathered before each solve.
+  auto reweigh = [&]() {
+    all.resize(static_cast<size_t>(mesh.NumberOfTets()));
+    std::iota(all.begin(), all.end(), 0);
+    LeastSquaresFit::Extend(mesh, x);
+    fit.UpdateMoments(mesh, all, &x);
+    iterations += fit.Solve(mesh, x, Opt.SolverTolerance);
+  };
+  for (int k = 0; weighted && k < Opt.ReweighSteps; ++k)
+  {
+    reweigh();
+  }
 
   if (progress)
   {
@@ -167,6 +195,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     m.RefinementLevels = level;
     m.SolverIterations = iterations;
     m.BuildSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    m.Weighted = weighted;
     if (onLevel)
     {
       onLevel(m);
@@ -175,7 +204,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   };
 
   size_t bi = 0;
-  std::vector<double> priority, tetRms;
+  std::vector<double> priority;
   for (int level = 0;; ++level)
   {
     if (progress && progress->Cancelled())
@@ -193,8 +222,16 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     double global;
     if (maxMetric && haveError)
     {
-      double rms;
-      fit.VoxelErrors(mesh, x, tetRms, priority, rms, global);
+      VoxelErrorReport e = fit.VoxelErrors(mesh, x);
+      priority = std::move(e.TetWeightedMax);
+      global = e.WeightedMax;
+    }
+    else if (weighted)
+    {
+      // The weight follows the fit (a stray into an opacity ramp counts), so it takes a voxel pass.
+      VoxelErrorReport e = fit.VoxelErrors(mesh, x);
+      priority = std::move(e.TetWeightedSse);
+      global = e.WeightedRms;
     }
     else
     {
@@ -274,8 +311,15 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     }
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-    fit.UpdateMoments(mesh, touched);
-    iterations += fit.Solve(mesh, x, Opt.SolverTolerance);
+    if (weighted)
+    {
+      reweigh();
+    }
+    else
+    {
+      fit.UpdateMoments(mesh, touched);
+      iterations += fit.Solve(mesh, x, Opt.SolverTolerance);
+    }
 
     if (haveError && budgets.empty())
     {

@@ -21,6 +21,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace art
@@ -45,6 +46,13 @@ struct ReducerOptions
   double Regularization = 0.5;   ///< smoothness weight on tets holding fewer than 8 voxel centres
   double MinEdgeVoxels = 2.0;    ///< a refinement edge shorter than this (in voxels) is never cut
   int CoarseTets = 0;            ///< size of the coarse Kuhn mesh (0: from the smallest budget)
+  /// Reduce for what a transfer function shows: (scalar, opacity) nodes of its scalar-opacity
+  /// function (empty: plain L2). The fit, the refinement choice and an error target then use
+  /// OpacityImportance's weighted error: a voxel weighs by the opacity slope it (or its fit) meets.
+  std::vector<std::pair<double, double>> ScalarOpacity;
+  double ImportanceFloor = 0.02; ///< weight of voxels whose neighbourhood meets no opacity change
+  int ImportanceRadius = 1;      ///< neighbourhood (2 r + 1)^3 voxels whose scalar range counts
+  int ReweighSteps = 3;          ///< weighted fit: extra reweighting steps on the coarse mesh
 };
 
 /// One output level: a tet mesh with the fitted values and its errors against the voxels.
@@ -55,6 +63,8 @@ struct ReducedMesh
   std::vector<double> Values; ///< the least-squares fit at each vertex
   std::vector<double> TetRms, TetMax; ///< each tet's error against the voxels it owns
   double Rms = 0, Max = 0;    ///< global error over every voxel, data units
+  double WeightedRms = 0, WeightedMax = 0; ///< the same for sqrt(w) |f - fit| (= plain when unweighted)
+  bool Weighted = false;      ///< reduced with a scalar-opacity importance
   double Range[2] = { 0, 0 }; ///< scalar range of the input
   double BuildSeconds = 0;    ///< from the start of the run to this level
   long long TargetTets = 0;   ///< the budget this level stands for (0: an error target)

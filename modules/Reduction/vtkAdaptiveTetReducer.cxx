@@ -5,12 +5,15 @@
 #include "ReducerVTK.h"
 #include "TetReducer.h"
 
+#include <algorithm>
+
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkObjectFactory.h>
+#include <vtkPiecewiseFunction.h>
 #include <vtkPointData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkUnstructuredGrid.h>
@@ -21,6 +24,19 @@ vtkAdaptiveTetReducer::vtkAdaptiveTetReducer()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
+}
+
+vtkAdaptiveTetReducer::~vtkAdaptiveTetReducer()
+{
+  this->SetScalarOpacity(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkAdaptiveTetReducer, ScalarOpacity, vtkPiecewiseFunction);
+
+vtkMTimeType vtkAdaptiveTetReducer::GetMTime()
+{
+  const vtkMTimeType t = this->Superclass::GetMTime();
+  return this->ScalarOpacity ? std::max(t, this->ScalarOpacity->GetMTime()) : t;
 }
 
 void vtkAdaptiveTetReducer::AddLevel(vtkIdType tets)
@@ -87,6 +103,21 @@ int vtkAdaptiveTetReducer::RequestData(
   opt.ErrorRelative = this->ErrorRelative;
   opt.RefineFraction = this->RefineFraction;
   opt.SolverTolerance = this->SolverTolerance;
+  opt.ImportanceFloor = this->ImportanceFloor;
+  if (this->ScalarOpacity)
+  {
+    double node[4];
+    for (int i = 0; i < this->ScalarOpacity->GetSize(); ++i)
+    {
+      this->ScalarOpacity->GetNodeValue(i, node);
+      opt.ScalarOpacity.emplace_back(node[0], node[1]);
+    }
+    if (opt.ScalarOpacity.empty())
+    {
+      vtkErrorMacro("The scalar-opacity function has no nodes.");
+      return 0;
+    }
+  }
   for (vtkIdType l : this->Levels)
   {
     if (l > 0 && (this->TargetTets <= 0 || l < this->TargetTets))
@@ -112,6 +143,8 @@ int vtkAdaptiveTetReducer::RequestData(
     this->RMSError = last.Rms;
     this->MaxError = last.Max;
     this->BuildSeconds = last.BuildSeconds;
+    this->WeightedRMSError = last.WeightedRms;
+    this->WeightedMaxError = last.WeightedMax;
     levels->SetNumberOfBlocks(static_cast<unsigned int>(meshes.size()));
     for (unsigned int i = 0; i < meshes.size(); ++i)
     {
@@ -140,4 +173,8 @@ void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Levels: " << this->Levels.size() << "\n";
   os << indent << "RMSError: " << this->RMSError << "\n";
   os << indent << "MaxError: " << this->MaxError << "\n";
+  os << indent << "ScalarOpacity: " << this->ScalarOpacity << "\n";
+  os << indent << "ImportanceFloor: " << this->ImportanceFloor << "\n";
+  os << indent << "WeightedRMSError: " << this->WeightedRMSError << "\n";
+  os << indent << "WeightedMaxError: " << this->WeightedMaxError << "\n";
 }

@@ -24,6 +24,8 @@
 
 #include <vector>
 
+class vtkPiecewiseFunction;
+
 class ADAPTIVERTREDUCTION_EXPORT vtkAdaptiveTetReducer : public vtkUnstructuredGridAlgorithm
 {
 public:
@@ -83,15 +85,34 @@ public:
   vtkIdType GetLevel(int i) const;
 
   /**
+   * Reduce for what a transfer function shows: voxels weigh by the slope of this scalar-opacity
+   * function over their neighbourhood's scalar range (and the fit's), so tets go where opacity
+   * changes. nullptr (the default) is the plain L2 reduction. Field data then also holds
+   * weighted_rms_error and weighted_max_error beside the plain errors.
+   */
+  void SetScalarOpacity(vtkPiecewiseFunction* f);
+  vtkGetObjectMacro(ScalarOpacity, vtkPiecewiseFunction);
+
+  /**
+   * Least voxel weight of the opacity-weighted reduction, in (0, 1] (default 0.02).
+   */
+  vtkSetClampMacro(ImportanceFloor, double, 1e-6, 1.0);
+  vtkGetMacro(ImportanceFloor, double);
+
+  /**
    * Figures of the last run (also in the output's field data).
    */
   vtkGetMacro(RMSError, double);
   vtkGetMacro(MaxError, double);
   vtkGetMacro(BuildSeconds, double);
+  vtkGetMacro(WeightedRMSError, double);
+  vtkGetMacro(WeightedMaxError, double);
+
+  vtkMTimeType GetMTime() override;
 
 protected:
   vtkAdaptiveTetReducer();
-  ~vtkAdaptiveTetReducer() override = default;
+  ~vtkAdaptiveTetReducer() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
@@ -106,6 +127,9 @@ protected:
   double SolverTolerance = 1e-8;
   std::vector<vtkIdType> Levels;
   double RMSError = 0.0, MaxError = 0.0, BuildSeconds = 0.0;
+  double WeightedRMSError = 0.0, WeightedMaxError = 0.0;
+  vtkPiecewiseFunction* ScalarOpacity = nullptr;
+  double ImportanceFloor = 0.02;
 
 private:
   vtkAdaptiveTetReducer(const vtkAdaptiveTetReducer&) = delete;

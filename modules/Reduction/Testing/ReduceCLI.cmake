@@ -21,6 +21,13 @@ art_reduce_cli_test(reduce_levels EXIT 0 STDOUT "level .*reduce_lv_500.vtu.*leve
   ARGS reduce "${_ct}" "${_out}/reduce_lv.vtu" --tets 4000 --levels 500,2000)
 art_reduce_cli_test(reduce_error_bound EXIT 0 STDOUT "error +RMS [0-9.]+.*\\(([0-2]\\.[0-9]+|3\\.000)% /"
   ARGS reduce "${_ct}" "${_out}/reduce_err.vtu" --max-error 3%)
+art_reduce_cli_test(reduce_tf EXIT 0
+  STDOUT "error +RMS [0-9.]+, max [0-9.]+ data units.*weighted +RMS [0-9.]+, max [0-9.]+ data units \\(opacity-weighted error of --tf ct-skin-bone\\)"
+  ARGS reduce "${_ct}" "${_out}/reduce_tf.vtu" --tets 5000 --tf ct-skin-bone)
+art_reduce_cli_test(reduce_tf_json EXIT 0 STDOUT "\"weighted\":true,\"weighted_rms_error\":[0-9.e+-]+,\"weighted_max_error\""
+  ARGS reduce --json --quiet "${_ct}" "${_out}/reduce_tf_json.vtu" --tets 2000 --tf ct-bone)
+art_reduce_cli_test(reduce_bad_tf EXIT 1 STDERR "unknown transfer-function preset 'nope'" ONE_LINE_STDERR
+  ARGS reduce "${_ct}" "${_out}/x.vtu" --tets 100 --tf nope)
 art_reduce_cli_test(reduce_no_target EXIT 2 STDERR "give --tets N or --max-error E" ONE_LINE_STDERR
   ARGS reduce "${_ct}" "${_out}/x.vtu")
 art_reduce_cli_test(reduce_bad_budget EXIT 2 STDERR "--tets wants a positive number" ONE_LINE_STDERR

@@ -86,4 +86,50 @@ r.AddObserver(vtkCommand.ErrorEvent, lambda o, e: messages.append(e))
 r.Update()
 assert messages, "no error reported for a 2-D image"
 assert r.GetOutput().GetNumberOfCells() == 0
-print("ok", errors, counts)
+# Reduce for a transfer function (the tet counts are checked in TestOpacityImportance): the API,
+# the figures and the field data. Equal ripples either side of a step; the left half's values
+# have no opacity, so the weighted run fits them worse and its weighted error is below its plain.
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
+ripples = image((40, 24, 24), lambda x, y, z: (0.2 if x < 20 else 0.8) + 0.15 * math.sin(0.5 * y) * math.sin(0.4 * z))
+opacity = vtkPiecewiseFunction()
+opacity.AddPoint(0.0, 0.0)
+opacity.AddPoint(0.5, 0.0)
+opacity.AddPoint(1.0, 1.0)
+
+
+def left_cells(grid):
+    n = 0
+    for i in range(grid.GetNumberOfCells()):
+        b = grid.GetCell(i).GetBounds()
+        n += (b[0] + b[1]) / 2 < 16
+    return n
+
+
+runs = {}
+for weighted in (False, True):
+    r = adaptivert.vtkAdaptiveTetReducer()
+    r.SetInputData(ripples)
+    r.SetTargetTets(1500)
+    if weighted:
+        r.SetScalarOpacity(opacity)
+        assert r.GetScalarOpacity() is opacity
+    r.Update()
+    fd = r.GetOutput().GetFieldData()
+    assert fd.GetArray("weighted").GetValue(0) == (1 if weighted else 0)
+    assert abs(fd.GetArray("weighted_rms_error").GetValue(0) - r.GetWeightedRMSError()) < 1e-12
+    runs[weighted] = (left_cells(r.GetOutput()), r.GetRMSError(), r.GetWeightedRMSError())
+assert runs[True][0] <= runs[False][0], runs
+assert runs[True][2] < 0.5 * runs[True][1], runs
+assert runs[True][1] > runs[False][1], runs  # the plain error pays for what is not seen
+
+# An empty opacity function is a clear error.
+messages = []
+r = adaptivert.vtkAdaptiveTetReducer()
+r.SetInputData(ripples)
+r.SetTargetTets(100)
+r.SetScalarOpacity(vtkPiecewiseFunction())
+r.AddObserver(vtkCommand.ErrorEvent, lambda o, e: messages.append(e))
+r.Update()
+assert messages and r.GetOutput().GetNumberOfCells() == 0
+
+print("ok", errors, counts, runs)
