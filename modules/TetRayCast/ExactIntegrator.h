@@ -3,9 +3,10 @@
 // piece colour c and extinction tau are linear in distance, and
 //   C = int_0^l c(s) tau(s) exp(-int_0^s tau) ds = c0 - c1 T + (c1 - c0)/l int_0^l exp(-E(s)) ds
 // (integration by parts; Williams & Max 1992 give the same integral through erf). The remaining
-// integral of exp(-quadratic) is taken by Gauss-Legendre on pieces of optical depth <= 1, in an
-// expm1 form for thin pieces, so it is accurate to round-off for very thin and very thick cells
-// alike (no table, unlike VTK's pre-integration). TrapezoidRule is the seed paper's rule
+// integral of exp(-quadratic) is taken in closed form for thick pieces (erfcx for rising, Dawson's
+// integral for falling extinction) and by Gauss-Legendre in an expm1 form for thin ones, so it is
+// accurate to round-off for very thin and very thick cells alike (no table over the transfer
+// function, unlike VTK's pre-integration). TrapezoidRule is the seed paper's rule
 // (Grosso, Luerig & Ertl 1997): transfer function sampled at the two ends only.
 #ifndef art_ExactIntegrator_h
 #define art_ExactIntegrator_h
@@ -28,6 +29,9 @@ struct RayAccum
   double lastRgb[3] = { 0, 0, 0 };
   double lastTau = 0;
 };
+
+/// Dawson's integral F(x) = exp(-x^2) int_0^x exp(t^2) dt, to about 1e-15 relative.
+ADAPTIVERTTETRAYCAST_EXPORT double Dawson(double x);
 
 /// One piece with linear colour and extinction: premultiplied colour C and transmittance T.
 ADAPTIVERTTETRAYCAST_EXPORT void IntegrateLinearPiece(const double c0[3], const double c1[3],

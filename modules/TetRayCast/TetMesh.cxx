@@ -57,6 +57,10 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
   {
     throw Error("mesh has no tetrahedra");
   }
+  if (Tets.size() >= (std::size_t(1) << 29))
+  {
+    throw Error("mesh has " + std::to_string(Tets.size()) + " tetrahedra; at most 2^29 are supported");
+  }
   for (std::size_t i = 0; i < Points.size(); ++i)
   {
     if (!IsFinite(Points[i]) || !std::isfinite(Values[i]))
@@ -151,7 +155,7 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
     }
   }
   vtkSMPTools::Sort(keys.begin(), keys.end());
-  Nbrs.assign(nt, { -1, -1, -1, -1 });
+  Links.assign(nt, { -1, -1, -1, -1 });
   for (std::size_t i = 0; i < keys.size();)
   {
     std::size_t j = i + 1;
@@ -173,8 +177,8 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
         throw Error("inconsistent neighbours: tets " + std::to_string(ta) + " and " + std::to_string(tb) +
           " lie on the same side of their shared face (overlap)");
       }
-      Nbrs[ta][fa] = tb;
-      Nbrs[tb][fb] = ta;
+      Links[ta][fa] = 4 * tb + fb;
+      Links[tb][fb] = 4 * ta + fa;
     }
     else
     {
@@ -308,6 +312,22 @@ void TetMesh::SortForLocality()
     tets[t] = Tets[order[t].second];
   }
   Tets.swap(tets);
+}
+
+void TetMesh::Barycentric(std::size_t t, const Vec3& p, double w[4]) const
+{
+  const auto& v = Tets[t];
+  const Vec3 &a = Points[v[0]], e1 = Points[v[1]] - a, e2 = Points[v[2]] - a, e3 = Points[v[3]] - a, x = p - a;
+  const double vol = Dot(e1, Cross(e2, e3));
+  if (!(std::fabs(vol) > 0))
+  {
+    w[0] = w[1] = w[2] = w[3] = 0.25;
+    return;
+  }
+  w[1] = Dot(x, Cross(e2, e3)) / vol;
+  w[2] = Dot(e1, Cross(x, e3)) / vol;
+  w[3] = Dot(e1, Cross(e2, x)) / vol;
+  w[0] = 1.0 - w[1] - w[2] - w[3];
 }
 
 TetMesh::Plane TetMesh::FacePlane(std::size_t t, int f) const

@@ -50,7 +50,17 @@ public:
   const std::vector<Vec3>& PointsArray() const { return Points; }
   const std::vector<double>& Scalars() const { return Values; }
   const std::array<int, 4>& Tet(std::size_t t) const { return Tets[t]; }
-  const std::array<int, 4>& Neighbours(std::size_t t) const { return Nbrs[t]; }
+  /// The tets across faces 0..3 of tet t (-1 on the boundary).
+  std::array<int, 4> Neighbours(std::size_t t) const
+  {
+    const auto& l = Links[t];
+    return { LinkTet(l[0]), LinkTet(l[1]), LinkTet(l[2]), LinkTet(l[3]) };
+  }
+  /// Face f of tet t as a link: 4 * neighbour + the neighbour's face index of the shared face, or
+  /// -1 on the boundary. The walker enters the neighbour knowing which of its faces it came through.
+  int Link(std::size_t t, int f) const { return Links[t][f]; }
+  static int LinkTet(int link) { return link < 0 ? -1 : link >> 2; }
+  static int LinkFace(int link) { return link & 3; }
   /// Outward plane of face f of tet t. Computed from the vertices when asked: the Pluecker walker
   /// never needs planes, and storing four per tet would cost 128 bytes a tet (half a gigabyte for
   /// a full-resolution CT head); the boundary faces' planes are kept.
@@ -59,6 +69,8 @@ public:
   /// f(x) = c[0] + c[1] x + c[2] y + c[3] z inside tet t.
   const std::array<double, 4>& Interpolant(std::size_t t) const { return Interp[t]; }
   const Vec3& VertexGradient(int v) const { return Gradients[v]; }
+  /// Barycentric weights of p in tet t (by sub-volumes; equal weights for a flat tet).
+  void Barycentric(std::size_t t, const Vec3& p, double w[4]) const;
   double Evaluate(std::size_t t, const Vec3& p) const
   {
     const auto& c = Interp[t];
@@ -86,7 +98,7 @@ private:
 
   std::vector<Vec3> Points;
   std::vector<double> Values;
-  std::vector<std::array<int, 4>> Tets, Nbrs;
+  std::vector<std::array<int, 4>> Tets, Links;
   std::vector<Plane> BPlanes;
   std::vector<std::array<double, 4>> Interp;
   std::vector<Vec3> Gradients;

@@ -79,11 +79,14 @@ struct TetRayCaster::Impl
           fa = fr[k];
           sa = iso.value;
           // Gouraud-style normal: vertex gradients interpolated at the hit point.
+          const double tHit = in.t + fa * (ex.t - in.t);
+          double bw[4];
+          M.Barycentric(t, r.org + r.dir * tHit, bw);
           const auto& tv = M.Tet(t);
           Vec3 g;
           for (int i = 0; i < 4; ++i)
           {
-            g += M.VertexGradient(tv[i]) * (in.w[i] + fa * (ex.w[i] - in.w[i]));
+            g += M.VertexGradient(tv[i]) * bw[i];
           }
           const double shade = S.ambient + S.diffuse * std::fabs(Dot(Normalize(g), view));
           const double a = iso.opacity;
@@ -94,7 +97,7 @@ struct TetRayCaster::Impl
           acc.T *= 1.0 - a;
           if (res.firstIso < 0)
           {
-            res.firstIso = in.t + fa * (ex.t - in.t);
+            res.firstIso = tHit;
           }
         }
         rule.Integrate(sa, ex.s, len * (1.0 - fa), acc);

@@ -3,7 +3,7 @@
 // (Platis & Theoharis, JGT 2003; Marmitt & Slusallek, EuroVis 2006): each edge's product is computed
 // from its two global vertex ids in a fixed order, so a face shared by two tets gets bit-identical
 // tests on both sides and a ray through an edge or vertex never jumps a gap or leaks. The products
-// also give the barycentric weights of the entry and exit points, hence their t and scalar.
+// also give the barycentric weights of the exit point, hence its t and scalar.
 // When no face passes (a ray lying in a face plane), the least-violating face is taken with its
 // weights clamped into the face: the centroid nudge of the paper, as a fallback only.
 #ifndef art_TetWalker_h
@@ -17,11 +17,10 @@
 
 namespace art
 {
-/// A point where a ray crosses a face: ray parameter, scalar, barycentric weights in the tet.
+/// A point where a ray crosses a face: ray parameter and scalar.
 struct FaceCrossing
 {
   double t = 0, s = 0;
-  double w[4] = { 0, 0, 0, 0 };
 };
 
 class TetWalker
@@ -60,12 +59,16 @@ public:
     {
       return false;
     }
-    Fill(v, f, s12 / sum, s20 / sum, s01 / sum, x);
+    const double wa = s12 / sum, wb = s20 / sum, wc = s01 / sum;
+    const Vec3 p = P[v[fv[0]]] * wa + P[v[fv[1]]] * wb + P[v[fv[2]]] * wc;
+    x.t = Dot(p - O, D) * InvDD;
+    x.s = F[v[fv[0]]] * wa + F[v[fv[1]]] * wb + F[v[fv[2]]] * wc;
     return true;
   }
 
   /// Walks from the entry crossing `in` of tet t, calling visit(t, in, out) for every tet crossed
-  /// (a false return stops the walk). Returns the boundary exit crossing in `out`.
+  /// (a false return stops the walk). Returns the boundary exit crossing in `out`. Crossings carry
+  /// t and the scalar only (TetMesh::Barycentric gives weights where a caller needs them).
   /// steps counts tets; nudges counts fallback exits.
   template <class Visit>
   void Walk(int t, int entryFace, FaceCrossing in, Visit&& visit, FaceCrossing& out,
@@ -73,134 +76,134 @@ public:
   {
     const std::size_t limit = M.NumberOfTets() + 8;
     int stuck = 0;
-    // Per local vertex: global id, q = p - o and D x q. Three of the four carry over from the
-    // previous tet (the shared face), so each step computes one new vertex; the side product of
-    // edge (u, v), u < v, is (D x q_u) . q_v, the same bits in every tet that has the edge.
-    int id[4];
-    Vec3 q[4], dq[4];
+    // The entry face (a, b, c) in the current tet's outward order, with the side products of its
+    // edges (all <= 0: the ray goes in). Each step adds the apex d: three new products decide
+    // the exit among the faces (c b d), (a c d), (b a d), and that face, reversed, is the next
+    // tet's entry face, so nothing is searched or recomputed.
+    // Four corner slots: a, b, c index the entry face; the fourth takes each new apex, and the
+    // vertex a step leaves behind frees its slot (indices move, corners do not).
+    Corner cs[4];
+    int ia = 0, ib = 1, ic = 2, id = 3;
+    double eab, ebc, eca;
     {
       const auto& v = M.Tet(t);
-      for (int i = 0; i < 4; ++i)
-      {
-        id[i] = v[i];
-        q[i] = P[v[i]] - O;
-        dq[i] = Cross(D, q[i]);
-      }
+      const int* fv = TetMesh::FaceVertex[entryFace];
+      cs[0] = MakeCorner(v[fv[0]]), cs[1] = MakeCorner(v[fv[1]]), cs[2] = MakeCorner(v[fv[2]]);
+      eab = Side(cs[0], cs[1]), ebc = Side(cs[1], cs[2]), eca = Side(cs[2], cs[0]);
     }
     for (std::size_t n = 0; n < limit; ++n)
     {
       ++steps;
-      double S[4][4];
-      for (int i = 0; i < 4; ++i)
+      const auto& v = M.Tet(t);
+      cs[id] = MakeCorner(v[entryFace]);
+      const Corner &a = cs[ia], &b = cs[ib], &c = cs[ic], &d = cs[id];
+      const double pa = Side(a, d), pb = Side(b, d), pc = Side(c, d);
+      // Outward edge products of each candidate face; the face's own vertex weights are the
+      // products of the opposite edges.
+      const double fA[3] = { -ebc, pb, -pc }; // face opposite a: (c, b, d)
+      const double fB[3] = { -eca, pc, -pa }; // face opposite b: (a, c, d)
+      const double fC[3] = { -eab, pa, -pb }; // face opposite c: (b, a, d)
+      const double* fs[3] = { fA, fB, fC };
+      int x = -1;
+      double bestLo = -1e300;
+      int fallback = 0;
+      for (int k = 0; k < 3; ++k)
       {
-        S[i][i] = 0;
-        for (int j = i + 1; j < 4; ++j)
+        const double* e = fs[k];
+        const double lo = std::min(e[0], std::min(e[1], e[2]));
+        if (lo >= 0 && e[0] + e[1] + e[2] > 0)
         {
-          S[i][j] = id[i] < id[j] ? Dot(dq[i], q[j]) : -Dot(dq[j], q[i]);
-          S[j][i] = -S[i][j];
+          x = k;
+          break;
+        }
+        if (lo > bestLo)
+        {
+          bestLo = lo;
+          fallback = k;
         }
       }
-      int best = -1;
-      double bestMin = -1e300, w[3] = { 1.0 / 3, 1.0 / 3, 1.0 / 3 };
-      bool proper = false;
-      for (int f = 0; f < 4; ++f)
+      if (x < 0)
       {
-        if (f == entryFace)
-        {
-          continue;
-        }
-        const int* fv = TetMesh::FaceVertex[f];
-        const double a = S[fv[0]][fv[1]], b = S[fv[1]][fv[2]], c = S[fv[2]][fv[0]];
-        const double lo = std::min(a, std::min(b, c)), sum = a + b + c;
-        const bool ok = lo >= 0 && sum > 0;
-        // A proper exit beats any fallback; among proper ones the most interior crossing wins.
-        if ((ok && !proper) || (ok == proper && lo > bestMin))
-        {
-          proper = ok;
-          best = f;
-          bestMin = lo;
-          const double ca = std::max(b, 0.0), cb = std::max(c, 0.0), cc = std::max(a, 0.0);
-          const double cs = ca + cb + cc;
-          if (cs > 0)
-          {
-            w[0] = ca / cs, w[1] = cb / cs, w[2] = cc / cs;
-          }
-          else
-          {
-            w[0] = w[1] = w[2] = 1.0 / 3;
-          }
-        }
-      }
-      if (!proper)
-      {
+        // No face passes (a ray in a face plane, or round-off against an earlier fallback): the
+        // least-violating face, its weights clamped into it.
         ++nudges;
+        x = fallback;
       }
+      // The exit face as (u, w, d): (c b d), (a c d) or (b a d); each of its vertices weighs the
+      // product of the opposite edge: u <- e[1], w <- e[2], d <- e[0].
+      const Corner& u = x == 0 ? c : (x == 1 ? a : b);
+      const Corner& w = x == 0 ? b : (x == 1 ? c : a);
+      const double* e = fs[x];
+      double wu = std::max(e[1], 0.0), ww = std::max(e[2], 0.0), wd = std::max(e[0], 0.0);
+      const double sum = wu + ww + wd;
+      if (sum > 0)
       {
-        const int* fv = TetMesh::FaceVertex[best];
-        out.w[best] = 0;
-        out.w[fv[0]] = w[0], out.w[fv[1]] = w[1], out.w[fv[2]] = w[2];
-        const Vec3 p = q[fv[0]] * w[0] + q[fv[1]] * w[1] + q[fv[2]] * w[2];
-        out.t = std::max(Dot(p, D) * InvDD, in.t);
-        out.s = F[id[fv[0]]] * w[0] + F[id[fv[1]]] * w[1] + F[id[fv[2]]] * w[2];
+        const double inv = 1.0 / sum;
+        wu *= inv, ww *= inv, wd *= inv;
       }
+      else
+      {
+        wu = ww = wd = 1.0 / 3;
+      }
+      out.t = std::max(Dot(u.q * wu + w.q * ww + d.q * wd, D) * InvDD, in.t);
+      out.s = u.f * wu + w.f * ww + d.f * wd;
       if (!visit(t, in, out))
       {
         return;
       }
       stuck = out.t > in.t ? 0 : stuck + 1;
-      const int next = M.Neighbours(t)[best];
-      if (next < 0 || stuck > 256)
+      // The exit face is opposite the vertex a, b or c: find its slot in this tet.
+      const int opp = x == 0 ? a.id : (x == 1 ? b.id : c.id);
+      const int* fv = TetMesh::FaceVertex[entryFace];
+      const int slot = v[fv[0]] == opp ? fv[0] : (v[fv[1]] == opp ? fv[1] : fv[2]);
+      const int link = M.Link(t, slot);
+      if (link < 0 || stuck > 256)
       {
         return;
       }
-      // Enter the neighbour through the shared face: carry the shared vertices over; the one
-      // new vertex is the apex, opposite the entry face.
-      const auto& nv = M.Tet(next);
-      int nid[4];
-      Vec3 nq[4], ndq[4];
-      double nw[4];
-      entryFace = 0;
-      for (int i = 0; i < 4; ++i)
+      // The exit face reversed is the next tet's entry face, outward for that tet.
+      if (x == 0)
       {
-        int j = 0;
-        while (j < 4 && id[j] != nv[i])
-        {
-          ++j;
-        }
-        nid[i] = nv[i];
-        if (j < 4)
-        {
-          nq[i] = q[j];
-          ndq[i] = dq[j];
-          nw[i] = out.w[j];
-        }
-        else
-        {
-          nq[i] = P[nv[i]] - O;
-          ndq[i] = Cross(D, nq[i]);
-          nw[i] = 0;
-          entryFace = i;
-        }
+        const double nab = pc, nbc = -pb, nca = ebc; // (c, d, b)
+        const int freed = ia;
+        ia = ic, ic = ib, ib = id, id = freed;
+        eab = nab, ebc = nbc, eca = nca;
       }
-      for (int i = 0; i < 4; ++i)
+      else if (x == 1)
       {
-        id[i] = nid[i], q[i] = nq[i], dq[i] = ndq[i], in.w[i] = nw[i];
+        const double nab = pa, nbc = -pc, nca = eca; // (a, d, c)
+        std::swap(ib, id);
+        eab = nab, ebc = nbc, eca = nca;
       }
-      in.t = out.t;
-      in.s = out.s;
-      t = next;
+      else
+      {
+        const double nbc = pb, nca = -pa; // (a, b, d)
+        std::swap(ic, id);
+        ebc = nbc, eca = nca;
+      }
+      t = TetMesh::LinkTet(link);
+      entryFace = TetMesh::LinkFace(link);
+      in = out;
     }
   }
 
 private:
-  void Fill(const std::array<int, 4>& v, int f, double wa, double wb, double wc, FaceCrossing& x) const
+  /// A vertex as the walk sees it: global id, scalar, q = p - o and D x q.
+  struct Corner
   {
-    const int* fv = TetMesh::FaceVertex[f];
-    x.w[f] = 0;
-    x.w[fv[0]] = wa, x.w[fv[1]] = wb, x.w[fv[2]] = wc;
-    const Vec3 p = P[v[fv[0]]] * wa + P[v[fv[1]]] * wb + P[v[fv[2]]] * wc;
-    x.t = Dot(p - O, D) * InvDD;
-    x.s = F[v[fv[0]]] * wa + F[v[fv[1]]] * wb + F[v[fv[2]]] * wc;
+    int id = -1;
+    double f = 0;
+    Vec3 q, dq;
+  };
+  Corner MakeCorner(int id) const
+  {
+    const Vec3 q = P[id] - O;
+    return { id, F[id], q, Cross(D, q) };
+  }
+  /// Side(u, v) from the carried D x q: the same bits as Side(u.id, v.id).
+  static double Side(const Corner& u, const Corner& v)
+  {
+    return u.id < v.id ? Dot(u.dq, v.q) : -Dot(v.dq, u.q);
   }
 
   const TetMesh& M;

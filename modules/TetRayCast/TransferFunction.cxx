@@ -61,7 +61,18 @@ TransferFunction::TransferFunction(std::vector<Node> nodes, double unitDistance)
 
 void TransferFunction::BuildTable()
 {
-  Table.clear();
+  const int n = static_cast<int>(N.size());
+  OpaqueBefore.assign(n + 2, 0);
+  for (int i = -1; i < n; ++i)
+  {
+    const bool lastOrFirst = i < 0 || i + 1 >= n;
+    const double tau = lastOrFirst ? (i < 0 ? N.front() : N.back()).tau : std::max(N[i].tau, N[i + 1].tau);
+    OpaqueBefore[i + 2] = OpaqueBefore[i + 1] + (tau > 0 ? 1 : 0);
+  }
+  // One bucket even for a single node, so Locate needs no special case.
+  Table.assign(1, 0);
+  T0 = N.front().s;
+  TScale = 0;
   if (N.size() < 2)
   {
     return;
@@ -239,48 +250,6 @@ TransferFunction TransferFunction::FromFile(const std::string& path)
     throw Error("no control points (expected lines 'scalar r g b opacity')", path);
   }
   return TransferFunction(std::move(nodes), unit);
-}
-
-int TransferFunction::Locate(double s) const
-{
-  if (s < N.front().s)
-  {
-    return -1;
-  }
-  const int last = static_cast<int>(N.size()) - 1;
-  if (s >= N.back().s)
-  {
-    return last;
-  }
-  int i = Table.empty() ? 0 : Table[static_cast<std::size_t>((s - T0) * TScale)];
-  while (i < last && N[i + 1].s <= s)
-  {
-    ++i;
-  }
-  while (i > 0 && N[i].s > s)
-  {
-    --i;
-  }
-  return i;
-}
-
-void TransferFunction::Evaluate(double s, double rgb[3], double& tau) const
-{
-  const int i = Locate(s);
-  if (i < 0 || i + 1 >= static_cast<int>(N.size()))
-  {
-    const Node& n = i < 0 ? N.front() : N.back();
-    rgb[0] = n.rgb[0], rgb[1] = n.rgb[1], rgb[2] = n.rgb[2];
-    tau = n.tau;
-    return;
-  }
-  const Node &a = N[i], &b = N[i + 1];
-  const double w = (s - a.s) / (b.s - a.s);
-  for (int k = 0; k < 3; ++k)
-  {
-    rgb[k] = a.rgb[k] + w * (b.rgb[k] - a.rgb[k]);
-  }
-  tau = a.tau + w * (b.tau - a.tau);
 }
 
 double TransferFunction::Alpha(double s) const

@@ -13,6 +13,7 @@
 #include "AdaptiveRTTetRayCastModule.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkVolumeProperty;
@@ -51,9 +52,59 @@ public:
   double UnitDistance() const { return Unit; }
 
   /// Index i of the interval [s_i, s_{i+1}] holding s (-1 below the first node, size-1 above).
-  int Locate(double s) const;
+  /// Inline: the ray caster asks once or twice per tet.
+  int Locate(double s) const
+  {
+    if (s < N.front().s)
+    {
+      return -1;
+    }
+    const int last = static_cast<int>(N.size()) - 1;
+    if (s >= N.back().s)
+    {
+      return last;
+    }
+    int i = Table[static_cast<std::size_t>((s - T0) * TScale)];
+    while (i < last && N[i + 1].s <= s)
+    {
+      ++i;
+    }
+    while (i > 0 && N[i].s > s)
+    {
+      --i;
+    }
+    return i;
+  }
   /// Colour and extinction at s.
-  void Evaluate(double s, double rgb[3], double& tau) const;
+  void Evaluate(double s, double rgb[3], double& tau) const { EvaluateIn(Locate(s), s, rgb, tau); }
+  /// The same, with s known to lie in interval i = Locate(s).
+  void EvaluateIn(int i, double s, double rgb[3], double& tau) const
+  {
+    if (i < 0 || i + 1 >= static_cast<int>(N.size()))
+    {
+      const Node& n = i < 0 ? N.front() : N.back();
+      rgb[0] = n.rgb[0], rgb[1] = n.rgb[1], rgb[2] = n.rgb[2];
+      tau = n.tau;
+      return;
+    }
+    const Node &a = N[i], &b = N[i + 1];
+    const double w = (s - a.s) / (b.s - a.s);
+    for (int k = 0; k < 3; ++k)
+    {
+      rgb[k] = a.rgb[k] + w * (b.rgb[k] - a.rgb[k]);
+    }
+    tau = a.tau + w * (b.tau - a.tau);
+  }
+  /// True when the extinction is zero on every interval from i0 to i1 (Locate indices, any
+  /// order): a segment whose scalars stay there neither absorbs nor emits, so the caster skips it.
+  bool Transparent(int i0, int i1) const
+  {
+    if (i0 > i1)
+    {
+      std::swap(i0, i1);
+    }
+    return OpaqueBefore[i1 + 2] == OpaqueBefore[i0 + 1];
+  }
   /// Opacity per unit distance at s (for maximum-intensity projection).
   double Alpha(double s) const;
 
@@ -64,6 +115,8 @@ private:
   double Unit = 1.0;
   // Locate in O(1): Table[k] is the interval holding the start of bucket k over [s_0, s_last].
   std::vector<int> Table;
+  // OpaqueBefore[i + 1] counts the intervals below interval i (-1 .. size-1) with any extinction.
+  std::vector<int> OpaqueBefore;
   double T0 = 0, TScale = 0;
 };
 } // namespace art
