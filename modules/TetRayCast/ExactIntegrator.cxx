@@ -185,17 +185,8 @@ void IntegrateLinearPiece(const double c0[3], const double c1[3], double tau0, d
   }
 }
 
-void ExactIntegrator::Integrate(double s0, double s1, double length, RayAccum& acc) const
+void ExactIntegrator::IntegrateSpan(double s0, double s1, int i0, int i1, double length, RayAccum& acc) const
 {
-  if (!(length > 0.0))
-  {
-    return;
-  }
-  const int i0 = TF.Locate(s0), i1 = s1 == s0 ? i0 : TF.Locate(s1);
-  if (TF.Transparent(i0, i1))
-  {
-    return; // no extinction, hence no emission either
-  }
   const auto& n = TF.Nodes();
   double ca[3], ta, cb[3], tb, C[3], T;
   if (s0 == acc.lastS)
@@ -249,15 +240,11 @@ void ExactIntegrator::Integrate(double s0, double s1, double length, RayAccum& a
   acc.lastRgb[0] = ca[0], acc.lastRgb[1] = ca[1], acc.lastRgb[2] = ca[2], acc.lastTau = ta;
 }
 
-void TrapezoidRule::Integrate(double s0, double s1, double length, RayAccum& acc) const
+void TrapezoidRule::IntegrateSpan(double s0, double s1, int i0, int i1, double length, RayAccum& acc) const
 {
-  if (!(length > 0.0))
-  {
-    return;
-  }
   double c0[3], t0, c1[3], t1;
-  TF.Evaluate(s0, c0, t0);
-  TF.Evaluate(s1, c1, t1);
+  TF.EvaluateIn(i0, s0, c0, t0);
+  TF.EvaluateIn(i1, s1, c1, t1);
   const double alpha = -std::expm1(-0.5 * length * (t0 + t1));
   for (int k = 0; k < 3; ++k)
   {

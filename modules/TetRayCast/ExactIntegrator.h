@@ -42,9 +42,19 @@ class ADAPTIVERTTETRAYCAST_EXPORT ExactIntegrator
 public:
   explicit ExactIntegrator(const TransferFunction& tf) : TF(tf) {}
   /// Composites the segment (scalar s0 -> s1 over `length` world units) behind `acc`.
-  void Integrate(double s0, double s1, double length, RayAccum& acc) const;
+  /// Inline up to the transparency test, which most segments of a typical transfer function end at.
+  void Integrate(double s0, double s1, double length, RayAccum& acc) const
+  {
+    const int i0 = TF.Locate(s0), i1 = s1 == s0 ? i0 : TF.Locate(s1);
+    if (length > 0.0 && !TF.Transparent(i0, i1))
+    {
+      IntegrateSpan(s0, s1, i0, i1, length, acc);
+    }
+  }
 
 private:
+  void IntegrateSpan(double s0, double s1, int i0, int i1, double length, RayAccum& acc) const;
+
   const TransferFunction& TF;
 };
 
@@ -53,9 +63,18 @@ class ADAPTIVERTTETRAYCAST_EXPORT TrapezoidRule
 public:
   explicit TrapezoidRule(const TransferFunction& tf) : TF(tf) {}
   /// alpha = 1 - exp(-l (tau0 + tau1) / 2), colour (c0 + c1) / 2 premultiplied by alpha.
-  void Integrate(double s0, double s1, double length, RayAccum& acc) const;
+  void Integrate(double s0, double s1, double length, RayAccum& acc) const
+  {
+    const int i0 = TF.Locate(s0), i1 = s1 == s0 ? i0 : TF.Locate(s1);
+    if (length > 0.0 && !TF.Transparent(i0, i1))
+    {
+      IntegrateSpan(s0, s1, i0, i1, length, acc);
+    }
+  }
 
 private:
+  void IntegrateSpan(double s0, double s1, int i0, int i1, double length, RayAccum& acc) const;
+
   const TransferFunction& TF;
 };
 } // namespace art
