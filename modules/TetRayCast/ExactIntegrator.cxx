@@ -185,8 +185,9 @@ void IntegrateLinearPiece(const double c0[3], const double c1[3], double tau0, d
   }
 }
 
-void ExactIntegrator::IntegrateSpan(double s0, double s1, int i0, int i1, double length, RayAccum& acc) const
+void ExactIntegrator::IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const
 {
+  const int i0 = TF.Locate(s0), i1 = s1 == s0 ? i0 : TF.Locate(s1);
   const auto& n = TF.Nodes();
   double ca[3], ta, cb[3], tb, C[3], T;
   if (s0 == acc.lastS)
@@ -240,8 +241,9 @@ void ExactIntegrator::IntegrateSpan(double s0, double s1, int i0, int i1, double
   acc.lastRgb[0] = ca[0], acc.lastRgb[1] = ca[1], acc.lastRgb[2] = ca[2], acc.lastTau = ta;
 }
 
-void TrapezoidRule::IntegrateSpan(double s0, double s1, int i0, int i1, double length, RayAccum& acc) const
+void TrapezoidRule::IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const
 {
+  const int i0 = TF.Locate(s0), i1 = s1 == s0 ? i0 : TF.Locate(s1);
   double c0[3], t0, c1[3], t1;
   TF.EvaluateIn(i0, s0, c0, t0);
   TF.EvaluateIn(i1, s1, c1, t1);

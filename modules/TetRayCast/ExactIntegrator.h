@@ -45,15 +45,14 @@ public:
   /// Inline up to the transparency test, which most segments of a typical transfer function end at.
   void Integrate(double s0, double s1, double length, RayAccum& acc) const
   {
-    const int i0 = TF.Locate(s0), i1 = s1 == s0 ? i0 : TF.Locate(s1);
-    if (length > 0.0 && !TF.Transparent(i0, i1))
+    if (length > 0.0 && !TF.Transparent(s0, s1))
     {
-      IntegrateSpan(s0, s1, i0, i1, length, acc);
+      IntegrateSpan(s0, s1, length, acc);
     }
   }
 
 private:
-  void IntegrateSpan(double s0, double s1, int i0, int i1, double length, RayAccum& acc) const;
+  void IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const;
 
   const TransferFunction& TF;
 };
@@ -65,15 +64,14 @@ public:
   /// alpha = 1 - exp(-l (tau0 + tau1) / 2), colour (c0 + c1) / 2 premultiplied by alpha.
   void Integrate(double s0, double s1, double length, RayAccum& acc) const
   {
-    const int i0 = TF.Locate(s0), i1 = s1 == s0 ? i0 : TF.Locate(s1);
-    if (length > 0.0 && !TF.Transparent(i0, i1))
+    if (length > 0.0 && !TF.Transparent(s0, s1))
     {
-      IntegrateSpan(s0, s1, i0, i1, length, acc);
+      IntegrateSpan(s0, s1, length, acc);
     }
   }
 
 private:
-  void IntegrateSpan(double s0, double s1, int i0, int i1, double length, RayAccum& acc) const;
+  void IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const;
 
   const TransferFunction& TF;
 };

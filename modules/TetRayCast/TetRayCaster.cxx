@@ -13,6 +13,12 @@
 #include <chrono>
 #include <cmath>
 
+#if defined(__GNUC__)
+#define ART_ALWAYS_INLINE __attribute__((always_inline))
+#else
+#define ART_ALWAYS_INLINE
+#endif
+
 namespace art
 {
 struct TetRayCaster::Impl
@@ -45,7 +51,8 @@ struct TetRayCaster::Impl
       ++res.pieces;
       const auto& bf = M.BoundaryFaces()[e.face];
       FaceCrossing out;
-      auto visit = [&](int t, const FaceCrossing& in, const FaceCrossing& ex) {
+      // Inlined into the walk by force: GCC otherwise calls it once per tet.
+      auto visit = [&](int t, const FaceCrossing& in, const FaceCrossing& ex) ART_ALWAYS_INLINE {
         if (mip)
         {
           res.maxScalar = std::max(res.maxScalar, std::max(in.s, ex.s));

@@ -61,28 +61,12 @@ TransferFunction::TransferFunction(std::vector<Node> nodes, double unitDistance)
 
 void TransferFunction::BuildTable()
 {
-  const int n = static_cast<int>(N.size());
-  OpaqueBefore.assign(n + 2, 0);
-  for (int i = -1; i < n; ++i)
-  {
-    const bool lastOrFirst = i < 0 || i + 1 >= n;
-    const double tau = lastOrFirst ? (i < 0 ? N.front() : N.back()).tau : std::max(N[i].tau, N[i + 1].tau);
-    OpaqueBefore[i + 2] = OpaqueBefore[i + 1] + (tau > 0 ? 1 : 0);
-  }
-  // One bucket even for a single node, so Locate needs no special case.
-  Table.assign(1, 0);
+  // Locate's table: the interval holding the start of each bucket.
   T0 = N.front().s;
-  TScale = 0;
-  if (N.size() < 2)
-  {
-    return;
-  }
-  const int K = 4096;
-  T0 = N.front().s;
-  TScale = K / (N.back().s - N.front().s);
-  Table.resize(K + 1);
+  TScale = N.size() < 2 ? 0.0 : Buckets / (N.back().s - N.front().s);
+  Table.assign(Buckets + 1, 0);
   int i = 0;
-  for (int k = 0; k <= K; ++k)
+  for (int k = 0; N.size() >= 2 && k <= Buckets; ++k)
   {
     const double s = T0 + k / TScale;
     while (i + 1 < static_cast<int>(N.size()) && N[i + 1].s <= s)
@@ -90,6 +74,37 @@ void TransferFunction::BuildTable()
       ++i;
     }
     Table[k] = i;
+  }
+  // A bucket is opaque when any interval it touches has extinction at either end; outside the
+  // nodes the end values hold.
+  auto opaque = [&](int first, int last) {
+    for (int j = std::max(first, 0); j <= last && j < static_cast<int>(N.size()); ++j)
+    {
+      if (N[j].tau > 0)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  OpaqueBuckets.assign(Buckets + 3, 0);
+  for (int j = 0; j < Buckets + 2; ++j)
+  {
+    bool o;
+    if (j == 0)
+    {
+      o = N.front().tau > 0;
+    }
+    else if (j == Buckets + 1 || N.size() < 2)
+    {
+      o = N.back().tau > 0;
+    }
+    else
+    {
+      const int k = j - 1;
+      o = opaque(Table[k], std::min(Table[k + 1] + 1, static_cast<int>(N.size()) - 1));
+    }
+    OpaqueBuckets[j + 1] = OpaqueBuckets[j] + (o ? 1 : 0);
   }
 }
 

@@ -12,6 +12,7 @@
 
 #include "AdaptiveRTTetRayCastModule.h"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -95,16 +96,19 @@ public:
     }
     tau = a.tau + w * (b.tau - a.tau);
   }
-  /// True when the extinction is zero on every interval from i0 to i1 (Locate indices, any
-  /// order): a segment whose scalars stay there neither absorbs nor emits, so the caster skips it.
-  bool Transparent(int i0, int i1) const
+  /// True when the extinction is zero for every scalar between s0 and s1 (either order), tested
+  /// on the Locate table's buckets (conservative at bucket edges). Such a segment neither absorbs
+  /// nor emits, and most segments under a typical transfer function are like that.
+  bool Transparent(double s0, double s1) const
   {
-    if (i0 > i1)
+    int j0 = Bucket(s0), j1 = Bucket(s1);
+    if (j0 > j1)
     {
-      std::swap(i0, i1);
+      std::swap(j0, j1);
     }
-    return OpaqueBefore[i1 + 2] == OpaqueBefore[i0 + 1];
+    return OpaqueBuckets[j1 + 1] == OpaqueBuckets[j0];
   }
+
   /// Opacity per unit distance at s (for maximum-intensity projection).
   double Alpha(double s) const;
 
@@ -115,8 +119,22 @@ private:
   double Unit = 1.0;
   // Locate in O(1): Table[k] is the interval holding the start of bucket k over [s_0, s_last].
   std::vector<int> Table;
-  // OpaqueBefore[i + 1] counts the intervals below interval i (-1 .. size-1) with any extinction.
-  std::vector<int> OpaqueBefore;
+  static constexpr int Buckets = 4096;
+  /// 0 below the first node, 1 .. Buckets over the nodes, Buckets + 1 from the last node up.
+  int Bucket(double s) const
+  {
+    if (s < T0)
+    {
+      return 0;
+    }
+    if (s >= N.back().s)
+    {
+      return Buckets + 1;
+    }
+    return 1 + std::min(static_cast<int>((s - T0) * TScale), Buckets - 1);
+  }
+  // OpaqueBuckets[j] counts the buckets below bucket j with any extinction.
+  std::vector<int> OpaqueBuckets;
   double T0 = 0, TScale = 0;
 };
 } // namespace art

@@ -139,6 +139,23 @@ TEST(Integrators, ExactSplitsAtControlPoints)
   EXPECT_NEAR(down.rgb[0], downMany.rgb[0], 1e-12);
 }
 
+TEST(TransferFunction, TransparentRanges)
+{
+  // Extinction only between 0.3 and 0.6 (0 at both nodes' outsides), and again above 2.
+  TransferFunction tf({ { 0, { 1, 1, 1 }, 0.0, 0 }, { 0.3, { 1, 1, 1 }, 0.0, 0 }, { 0.45, { 1, 1, 1 }, 0.5, 0 },
+                        { 0.6, { 1, 1, 1 }, 0.0, 0 }, { 1, { 1, 1, 1 }, 0.0, 0 }, { 2, { 1, 1, 1 }, 0.2, 0 } });
+  EXPECT_TRUE(tf.Transparent(-5.0, 0.29));
+  EXPECT_TRUE(tf.Transparent(0.29, 0.0));
+  EXPECT_FALSE(tf.Transparent(0.2, 0.35));
+  EXPECT_FALSE(tf.Transparent(0.0, 0.9)); // passes through the opaque band
+  EXPECT_FALSE(tf.Transparent(0.9, 0.0));
+  EXPECT_TRUE(tf.Transparent(0.61, 0.99));
+  EXPECT_FALSE(tf.Transparent(1.5, 1.6)); // extinction rises from 1 to 2
+  EXPECT_FALSE(tf.Transparent(5.0, 6.0)); // above the last node its value holds
+  TransferFunction one({ { 0.5, { 1, 1, 1 }, 0.0, 0 } });
+  EXPECT_TRUE(one.Transparent(-1.0, 3.0));
+}
+
 TEST(Integrators, TrapezoidConvergesToExact)
 {
   TransferFunction tf = TransferFunction::Preset("grey-ramp", 0, 1);
