@@ -141,7 +141,7 @@ void Declare(cli::Options& o)
   o.Add("tets-levels", 0, "N,N..", "tet budgets of the reduction series", "10000,25000,50000,100000,250000");
   o.Add("tets-size", 0, "WxH", "image size for `bench tets`", "500x500");
   o.Add("tets-tf", 0, "NAME|FILE", "transfer function for `bench tets`", "ct-skin-bone");
-  o.Add("tets-weighted-reduction", 0, "", "reduce weighted by the transfer function's opacity");
+  o.Add("tets-plain-reduction", 0, "", "reduce in plain L2, not weighted by the transfer function's opacity");
   o.Add("tets-bunyk-max", 0, "N", "largest mesh (tets) given to VTK's Bunyk mapper", "1000000");
   o.Add("tets-no-vtk", 0, "", "skip VTK's mappers (they need a display)");
 }
@@ -212,7 +212,7 @@ int Run(const cli::Options& o)
       art::ReducerOptions ro;
       ro.TargetTets = levels.back();
       ro.Levels = levels;
-      if (o.Flag("tets-weighted-reduction"))
+      if (!o.Flag("tets-plain-reduction"))
       {
         for (const auto& n : tf.Nodes())
         {
@@ -335,7 +335,7 @@ int Run(const cli::Options& o)
   std::ostringstream md;
   md << "# Tet ray casting: the CT head reduction series (" << W << " x " << H << ")\n\n"
      << in << " (" << dims[0] << " x " << dims[1] << " x " << dims[2] << " voxels), transfer function " << tfName
-     << (o.Flag("tets-weighted-reduction") ? " (reduction weighted by its opacity)" : " (plain L2 reduction)")
+     << (o.Flag("tets-plain-reduction") ? " (plain L2 reduction)" : " (reduction weighted by its opacity)")
      << ", reference: voxel ray caster (trilinear, 2 samples/voxel, exact steps, no ERT; " << refStats.seconds
      << " s). " << cpu << ", " << art::GetThreadCount() << " threads, commit " << commit << ", " << date
      << ". Times: median of " << runs << " runs after a warm-up [min-max].\n\n"

@@ -54,7 +54,7 @@ void Declare(cli::Options& o)
   o.Add("mip", 0, "", "maximum-intensity projection instead of emission-absorption");
   o.Add("tets", 0, "N", "reduce a volume to about N adaptive tets first");
   o.Add("max-error", 0, "E", "reduce a volume until the RMS error is at most E (data units)");
-  o.Add("weighted-reduction", 0, "", "reduce weighted by the transfer function's opacity (not the default: it measured lower PSNR)");
+  o.Add("plain-reduction", 0, "", "reduce in plain L2, not weighted by the transfer function's opacity");
   o.Add("reference", 0, "", "render the full-resolution voxel reference instead");
   o.Add("no-error", 0, "", "skip the reference render and the error figures");
 }
@@ -154,7 +154,7 @@ int Run(const cli::Options& o, const std::string& input)
         {
           ro.TargetError = o.GetDouble("max-error");
         }
-        if (o.Flag("weighted-reduction") && settings.mode == art::RenderSettings::Mode::Composite)
+        if (!o.Flag("plain-reduction") && settings.mode == art::RenderSettings::Mode::Composite)
         {
           for (const auto& n : settings.tf.Nodes()) // model what this transfer function shows
           {

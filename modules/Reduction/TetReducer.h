@@ -51,7 +51,7 @@ struct ReducerOptions
   /// OpacityImportance's weighted error: a voxel weighs by the opacity slope it (or its fit) meets.
   std::vector<std::pair<double, double>> ScalarOpacity;
   double ImportanceFloor = 0.02; ///< weight of voxels whose neighbourhood meets no opacity change
-  int ImportanceRadius = 1;      ///< neighbourhood (2 r + 1)^3 voxels whose scalar range counts
+  int ImportanceRadius = 2;      ///< neighbourhood (2 r + 1)^3 voxels whose scalar range counts
   int ReweighSteps = 3;          ///< weighted fit: extra reweighting steps on the coarse mesh
 };
 

@@ -104,6 +104,7 @@ int vtkAdaptiveTetReducer::RequestData(
   opt.RefineFraction = this->RefineFraction;
   opt.SolverTolerance = this->SolverTolerance;
   opt.ImportanceFloor = this->ImportanceFloor;
+  opt.ImportanceRadius = this->ImportanceRadius;
   if (this->ScalarOpacity)
   {
     double node[4];
@@ -175,6 +176,7 @@ void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaxError: " << this->MaxError << "\n";
   os << indent << "ScalarOpacity: " << this->ScalarOpacity << "\n";
   os << indent << "ImportanceFloor: " << this->ImportanceFloor << "\n";
+  os << indent << "ImportanceRadius: " << this->ImportanceRadius << "\n";
   os << indent << "WeightedRMSError: " << this->WeightedRMSError << "\n";
   os << indent << "WeightedMaxError: " << this->WeightedMaxError << "\n";
 }

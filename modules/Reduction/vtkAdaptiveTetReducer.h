@@ -100,6 +100,12 @@ public:
   vtkGetMacro(ImportanceFloor, double);
 
   /**
+   * Neighbourhood radius (voxels) whose scalar range sets a voxel's weight (default 2: 5^3).
+   */
+  vtkSetClampMacro(ImportanceRadius, int, 0, 8);
+  vtkGetMacro(ImportanceRadius, int);
+
+  /**
    * Figures of the last run (also in the output's field data).
    */
   vtkGetMacro(RMSError, double);
@@ -130,6 +136,7 @@ protected:
   double WeightedRMSError = 0.0, WeightedMaxError = 0.0;
   vtkPiecewiseFunction* ScalarOpacity = nullptr;
   double ImportanceFloor = 0.02;
+  int ImportanceRadius = 2;
 
 private:
   vtkAdaptiveTetReducer(const vtkAdaptiveTetReducer&) = delete;

@@ -112,7 +112,8 @@ for weighted in (False, True):
     r.SetTargetTets(1500)
     if weighted:
         r.SetScalarOpacity(opacity)
-        assert r.GetScalarOpacity() is opacity
+        r.SetImportanceRadius(1)
+        assert r.GetScalarOpacity() is opacity and r.GetImportanceRadius() == 1
     r.Update()
     fd = r.GetOutput().GetFieldData()
     assert fd.GetArray("weighted").GetValue(0) == (1 if weighted else 0)
