@@ -98,39 +98,38 @@ public:
       cs[id] = MakeCorner(v[entryFace]);
       const Corner &a = cs[ia], &b = cs[ib], &c = cs[ic], &d = cs[id];
       const double pa = Side(a, d), pb = Side(b, d), pc = Side(c, d);
-      // Outward edge products of each candidate face; the face's own vertex weights are the
-      // products of the opposite edges.
+      // Outward edge products of each candidate face (entry edge first); a face's vertices weigh
+      // the products of their opposite edges.
       const double fA[3] = { -ebc, pb, -pc }; // face opposite a: (c, b, d)
       const double fB[3] = { -eca, pc, -pa }; // face opposite b: (a, c, d)
       const double fC[3] = { -eab, pa, -pb }; // face opposite c: (b, a, d)
       const double* fs[3] = { fA, fB, fC };
-      int x = -1;
-      double bestLo = -1e300;
-      int fallback = 0;
-      for (int k = 0; k < 3; ++k)
+      // The signs of pa, pb, pc name the exit face (A: pb >= 0 >= pc, B: pc >= 0 >= pa,
+      // C: pa >= 0 >= pb). Only a strictly interior crossing is taken on that word; a crossing on
+      // an edge or vertex (a zero product) or a failed test goes to the full rule: a proper exit
+      // beats any fallback, among proper ones the most interior wins, and with none the
+      // least-violating face is taken, its weights clamped into it.
+      static constexpr int byCode[8] = { -1, 1, 0, 1, 2, 2, 0, -1 };
+      int x = byCode[(pa >= 0 ? 4 : 0) | (pb >= 0 ? 2 : 0) | (pc >= 0 ? 1 : 0)];
+      if (x < 0 || !(std::min(fs[x][0], std::min(fs[x][1], fs[x][2])) > 0))
       {
-        const double* e = fs[k];
-        const double lo = std::min(e[0], std::min(e[1], e[2]));
-        if (lo >= 0 && e[0] + e[1] + e[2] > 0)
+        double bestLo = -1e300;
+        bool proper = false;
+        for (int k = 0; k < 3; ++k)
         {
-          x = k;
-          break;
+          const double* f = fs[k];
+          const double lo = std::min(f[0], std::min(f[1], f[2]));
+          const bool ok = lo >= 0 && f[0] + f[1] + f[2] > 0;
+          if ((ok && !proper) || (ok == proper && lo > bestLo))
+          {
+            proper = ok;
+            bestLo = lo;
+            x = k;
+          }
         }
-        if (lo > bestLo)
-        {
-          bestLo = lo;
-          fallback = k;
-        }
+        nudges += proper ? 0 : 1;
       }
-      if (x < 0)
-      {
-        // No face passes (a ray in a face plane, or round-off against an earlier fallback): the
-        // least-violating face, its weights clamped into it.
-        ++nudges;
-        x = fallback;
-      }
-      // The exit face as (u, w, d): (c b d), (a c d) or (b a d); each of its vertices weighs the
-      // product of the opposite edge: u <- e[1], w <- e[2], d <- e[0].
+      // The exit face as (u, w, d): (c b d), (a c d) or (b a d); u <- e[1], w <- e[2], d <- e[0].
       const Corner& u = x == 0 ? c : (x == 1 ? a : b);
       const Corner& w = x == 0 ? b : (x == 1 ? c : a);
       const double* e = fs[x];
@@ -145,7 +144,7 @@ public:
       {
         wu = ww = wd = 1.0 / 3;
       }
-      out.t = std::max(Dot(u.q * wu + w.q * ww + d.q * wd, D) * InvDD, in.t);
+      out.t = std::max(u.t * wu + w.t * ww + d.t * wd, in.t);
       out.s = u.f * wu + w.f * ww + d.f * wd;
       if (!visit(t, in, out))
       {
@@ -188,17 +187,17 @@ public:
   }
 
 private:
-  /// A vertex as the walk sees it: global id, scalar, q = p - o and D x q.
+  /// A vertex as the walk sees it: global id, scalar, ray parameter, q = p - o and D x q.
   struct Corner
   {
     int id = -1;
-    double f = 0;
+    double f = 0, t = 0; ///< scalar, and the ray parameter of the vertex's projection on the ray
     Vec3 q, dq;
   };
   Corner MakeCorner(int id) const
   {
     const Vec3 q = P[id] - O;
-    return { id, F[id], q, Cross(D, q) };
+    return { id, F[id], Dot(q, D) * InvDD, q, Cross(D, q) };
   }
   /// Side(u, v) from the carried D x q: the same bits as Side(u.id, v.id).
   static double Side(const Corner& u, const Corner& v)
