@@ -11,6 +11,7 @@
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkRayCastImageDisplayHelper.h>
@@ -21,6 +22,7 @@
 #include <vtkVolumeProperty.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -136,7 +138,44 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const int vw = std::max(1, size[0]), vh = std::max(1, size[1]);
   const int w = std::max(1, static_cast<int>(vw / this->ImageSampleDistance + 0.5));
   const int h = std::max(1, static_cast<int>(vh / this->ImageSampleDistance + 0.5));
-  const art::Camera cam = art::Camera::FromVTK(ren->GetActiveCamera(), w, h);
+  // Rays are cast in the data's own coordinates: the camera goes through the inverse of the
+  // volume's matrix (exact for rotations, translations and uniform scales; segment lengths, and
+  // so the opacity unit distance, are measured in data units).
+  vtkMatrix4x4* toWorld = vol->GetMatrix();
+  vtkNew<vtkCamera> local;
+  local->DeepCopy(ren->GetActiveCamera());
+  if (!toWorld->IsIdentity())
+  {
+    vtkNew<vtkMatrix4x4> toData;
+    vtkMatrix4x4::Invert(toWorld, toData);
+    double pos[4], fp[4], up[3], q[4];
+    local->GetPosition(pos);
+    local->GetFocalPoint(fp);
+    local->GetViewUp(up);
+    pos[3] = fp[3] = 1.0;
+    toData->MultiplyPoint(pos, q);
+    local->SetPosition(q[0] / q[3], q[1] / q[3], q[2] / q[3]);
+    toData->MultiplyPoint(fp, q);
+    local->SetFocalPoint(q[0] / q[3], q[1] / q[3], q[2] / q[3]);
+    double up4[4] = { up[0], up[1], up[2], 0.0 };
+    toData->MultiplyPoint(up4, q);
+    local->SetViewUp(q[0], q[1], q[2]);
+    // Column lengths of the linear part: the scale along each axis.
+    double len[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      len[c] = std::sqrt(toWorld->GetElement(0, c) * toWorld->GetElement(0, c) +
+        toWorld->GetElement(1, c) * toWorld->GetElement(1, c) + toWorld->GetElement(2, c) * toWorld->GetElement(2, c));
+    }
+    local->SetParallelScale(local->GetParallelScale() / std::cbrt(len[0] * len[1] * len[2]));
+    const double lo = std::min(len[0], std::min(len[1], len[2])), hi = std::max(len[0], std::max(len[1], len[2]));
+    if (hi > lo * (1 + 1e-6) && !this->WarnedNonUniform)
+    {
+      this->WarnedNonUniform = true;
+      vtkWarningMacro("the vtkVolume's matrix scales its axes differently; rays are cast as if it were uniform");
+    }
+  }
+  const art::Camera cam = art::Camera::FromVTK(local, w, h);
   art::Image img;
   const art::RenderStats st = art::TetRayCaster(*this->Impl->Mesh, s).Render(cam, img);
   this->LastRenderTime = st.seconds;
@@ -171,8 +210,9 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   double minZ = 1.0;
   for (int k = 0; k < 8; ++k)
   {
-    double p[4] = { b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)], 1.0 }, q[4];
-    m->MultiplyPoint(p, q);
+    double p[4] = { b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)], 1.0 }, pw[4], q[4];
+    toWorld->MultiplyPoint(p, pw);
+    m->MultiplyPoint(pw, q);
     if (q[3] != 0)
     {
       minZ = std::min(minZ, q[2] / q[3]);

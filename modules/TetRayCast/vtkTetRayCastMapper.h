@@ -9,7 +9,8 @@
  * vertex gradients, and rays stop at the early-termination opacity. The image is computed on all
  * cores at the renderer's size divided by ImageSampleDistance and drawn as a textured quad, like
  * VTK's own ray cast mappers. Non-tetrahedral cells are tetrahedralised first. The volume's
- * transform (vtkProp3D matrix) is not applied: the data are drawn in world coordinates.
+ * matrix (position, orientation, uniform scale) is honoured by casting in the data's coordinates;
+ * an anisotropic scale is approximated (with a warning).
  */
 #ifndef vtkTetRayCastMapper_h
 #define vtkTetRayCastMapper_h
@@ -70,6 +71,7 @@ protected:
   vtkTypeBool TrapezoidRule = 0;
   double LastRenderTime = 0.0;
   double LastTetsCrossed = 0.0;
+  bool WarnedNonUniform = false;
 
 private:
   vtkTetRayCastMapper(const vtkTetRayCastMapper&) = delete;
