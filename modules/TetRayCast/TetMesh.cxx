@@ -330,6 +330,48 @@ void TetMesh::Barycentric(std::size_t t, const Vec3& p, double w[4]) const
   w[0] = 1.0 - w[1] - w[2] - w[3];
 }
 
+int TetMesh::Locate(const Vec3& p, int hint, bool exhaustive) const
+{
+  const double tol = -1e-12;
+  auto inside = [&](std::size_t t, int* beyond) {
+    double w[4];
+    Barycentric(t, p, w);
+    const int k = static_cast<int>(std::min_element(w, w + 4) - w);
+    if (beyond)
+    {
+      *beyond = k;
+    }
+    return w[k] >= tol;
+  };
+  if (!Box.Contains(p))
+  {
+    return -1;
+  }
+  int t = hint >= 0 && static_cast<std::size_t>(hint) < Tets.size() ? hint : 0;
+  for (int step = 0; step < 100000; ++step)
+  {
+    int k;
+    if (inside(t, &k))
+    {
+      return t;
+    }
+    const int next = LinkTet(Links[t][k]);
+    if (next < 0)
+    {
+      break;
+    }
+    t = next;
+  }
+  for (std::size_t u = 0; exhaustive && u < Tets.size(); ++u)
+  {
+    if (inside(u, nullptr))
+    {
+      return static_cast<int>(u);
+    }
+  }
+  return -1;
+}
+
 TetMesh::Plane TetMesh::FacePlane(std::size_t t, int f) const
 {
   const auto& v = Tets[t];

@@ -26,7 +26,7 @@ struct TetRayCaster::Impl
   // Integrates one ray over every piece of the mesh it passes through, front to back.
   template <class Rule>
   static void Trace(const TetRayCaster& rc, const Rule& rule, const TetWalker& w, const Ray& r,
-    const std::vector<Entry>& entries, RayResult& res, Counters& c, std::uint64_t& nudges)
+    int start, const std::vector<Entry>& entries, RayResult& res, Counters& c, std::uint64_t& nudges)
   {
     const TetMesh& M = rc.M;
     const RenderSettings& S = rc.S;
@@ -38,21 +38,8 @@ struct TetRayCaster::Impl
     bool stop = false;
     double fr[8];
     int fi[8];
-    for (const Entry& e : entries)
-    {
-      if (stop)
-      {
-        break;
-      }
-      if (e.x.t < tDone)
-      {
-        continue; // inside a piece already integrated (a duplicate at an edge)
-      }
-      ++res.pieces;
-      const auto& bf = M.BoundaryFaces()[e.face];
-      FaceCrossing out;
-      // Inlined into the walk by force: GCC otherwise calls it once per tet.
-      auto visit = [&](int t, const FaceCrossing& in, const FaceCrossing& ex) ART_ALWAYS_INLINE {
+    // Inlined into the walk by force: GCC otherwise calls it once per tet.
+    auto visit = [&](int t, const FaceCrossing& in, const FaceCrossing& ex) ART_ALWAYS_INLINE {
         if (mip)
         {
           res.maxScalar = std::max(res.maxScalar, std::max(in.s, ex.s));
@@ -115,6 +102,51 @@ struct TetRayCaster::Impl
         }
         return true;
       };
+    if (start >= 0)
+    {
+      // The ray starts inside tet `start` (a camera inside the mesh): from its origin to the face
+      // it leaves through, then on through the neighbours like any other piece.
+      FaceCrossing in, ex;
+      in.t = r.tmin;
+      in.s = M.Evaluate(start, r.At(r.tmin));
+      int f = -1;
+      for (int k = 0; k < 4 && f < 0; ++k)
+      {
+        if (w.Crosses(start, k, +1, ex) && ex.t >= in.t)
+        {
+          f = k;
+        }
+      }
+      if (f >= 0)
+      {
+        ++res.pieces;
+        ++c.tetsCrossed;
+        FaceCrossing out = ex;
+        const int link = M.Link(start, f);
+        if (visit(start, in, ex) && link >= 0)
+        {
+          w.Walk(TetMesh::LinkTet(link), TetMesh::LinkFace(link), ex, visit, out, c.tetsCrossed, nudges);
+        }
+        tDone = out.t;
+      }
+      else
+      {
+        ++nudges; // the origin on a face or the ray in one: the boundary entries take over
+      }
+    }
+    for (const Entry& e : entries)
+    {
+      if (stop)
+      {
+        break;
+      }
+      if (e.x.t < tDone)
+      {
+        continue; // inside a piece already integrated (a duplicate at an edge)
+      }
+      ++res.pieces;
+      const auto& bf = M.BoundaryFaces()[e.face];
+      FaceCrossing out;
       w.Walk(bf[0], bf[1], e.x, visit, out, c.tetsCrossed, nudges);
       tDone = out.t;
     }
@@ -208,6 +240,8 @@ struct TetRayCaster::Impl
     const auto start = std::chrono::steady_clock::now();
     img = Image(cam.Width(), cam.Height());
     const EntryFinder finder(rc.M, cam);
+    const bool parallel = cam.IsParallel();
+    const int eyeTet = !parallel && rc.M.Bounds().Contains(cam.Position()) ? rc.M.Locate(cam.Position()) : -1;
     std::atomic<std::uint64_t> nudges{ 0 };
     if (p)
     {
@@ -218,7 +252,8 @@ struct TetRayCaster::Impl
       [&](const Tile& tile, Counters& c) {
         std::vector<Entry> entries;
         std::uint64_t nd = 0;
-        int hint = -1;
+        int hint = -1, startHint = -1;
+        bool searched = false;
         for (int y = tile.y0; y < tile.y1; ++y)
         {
           // Scan lines in alternating directions: each ray starts next to the previous one.
@@ -233,15 +268,25 @@ struct TetRayCaster::Impl
             {
               continue;
             }
+            // A ray from inside the mesh starts in the tet holding its origin: the eye's for a
+            // perspective camera; a parallel camera's origins are walked to from the previous
+            // ray's tet (one exhaustive search per tile at most).
+            int start = eyeTet;
+            if (parallel && rc.M.Bounds().Contains(r.At(r.tmin)))
+            {
+              start = rc.M.Locate(r.At(r.tmin), startHint, !searched);
+              searched = searched || startHint < 0;
+              startHint = start >= 0 ? start : startHint;
+            }
             const TetWalker w(rc.M, r);
             Entries(rc, finder, w, r, x, y, entries, hint, c);
-            if (entries.empty())
+            if (entries.empty() && start < 0)
             {
               continue;
             }
             ++c.hits;
             RayResult res;
-            Trace(rc, rule, w, r, entries, res, c, nd);
+            Trace(rc, rule, w, r, start, entries, res, c, nd);
             img.Set(x, y, { float(res.rgba[0]), float(res.rgba[1]), float(res.rgba[2]), float(res.rgba[3]) });
           }
         }
@@ -302,13 +347,14 @@ RayResult TetRayCaster::Cast(const Ray& r) const
   Counters c;
   std::uint64_t nudges = 0;
   Impl::Entries(*this, finder, w, r, -1, -1, entries, hint, c);
+  const int start = M.Bounds().Contains(r.At(r.tmin)) ? M.Locate(r.At(r.tmin)) : -1;
   if (S.rule == RenderSettings::Rule::Trapezoid)
   {
-    Impl::Trace(*this, TrapezoidRule(S.tf), w, r, entries, res, c, nudges);
+    Impl::Trace(*this, TrapezoidRule(S.tf), w, r, start, entries, res, c, nudges);
   }
   else
   {
-    Impl::Trace(*this, ExactIntegrator(S.tf), w, r, entries, res, c, nudges);
+    Impl::Trace(*this, ExactIntegrator(S.tf), w, r, start, entries, res, c, nudges);
   }
   return res;
 }
