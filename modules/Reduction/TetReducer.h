@@ -13,6 +13,8 @@
 // leaves a third or more of the voxel centres uncovered; over the voxels it does cover its RMS
 // is lower than ours over all, a hint that its anisotropic tets suit CT edges better than
 // isotropic bisection. TetGen/CGAL sizing-field refinement was not built: no exact nesting.
+// RefineFraction 0.05-0.5, MinEdgeVoxels 1-3, Regularization 0.05-3, the coarse mesh size and a
+// bisection-gain priority move these ratios by at most a few percent (reduction_results/README.md).
 #ifndef art_TetReducer_h
 #define art_TetReducer_h
 
