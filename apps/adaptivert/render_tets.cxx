@@ -230,18 +230,20 @@ int Run(const cli::Options& o, const std::string& input)
     }
     auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf);
     rc.SetMaxIntensity(settings.mode == art::RenderSettings::Mode::MaxIntensity);
+    rc.SetIsoSurfaces(settings.isos, settings.ambient, settings.diffuse);
     st = rc.Render(cam, img, &progress);
   }
   else
   {
     const art::TetRayCaster caster(mesh, settings);
     st = caster.Render(cam, img, &progress);
-    if (!o.Flag("no-error") && settings.isos.empty())
+    if (!o.Flag("no-error"))
     {
       if (volume)
       {
         auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf);
         rc.SetMaxIntensity(settings.mode == art::RenderSettings::Mode::MaxIntensity);
+        rc.SetIsoSurfaces(settings.isos, settings.ambient, settings.diffuse);
         rst = rc.Render(cam, ref, &progress);
         haveRef = true;
       }

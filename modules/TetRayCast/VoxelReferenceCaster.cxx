@@ -66,6 +66,20 @@ double VoxelReferenceCaster::Sample(const Vec3& p) const
   return c0 + f[2] * (c1 - c0);
 }
 
+Vec3 VoxelReferenceCaster::Gradient(const Vec3& p) const
+{
+  const double h = 0.5 * std::min(H.x, std::min(H.y, H.z));
+  Vec3 g;
+  for (int a = 0; a < 3; ++a)
+  {
+    Vec3 lo = p, hi = p;
+    lo[a] = std::max(p[a] - h, Box.lo[a]);
+    hi[a] = std::min(p[a] + h, Box.hi[a]);
+    g[a] = hi[a] > lo[a] ? (Sample(hi) - Sample(lo)) / (hi[a] - lo[a]) : 0.0;
+  }
+  return g;
+}
+
 RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress* progress) const
 {
   const auto start = std::chrono::steady_clock::now();
@@ -76,6 +90,47 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
   {
     progress->Begin("reference", double(cam.Width()) * cam.Height()); // ForEachTile counts pixels
   }
+  // A step from sa to sb with the iso crossings on it (half-open, as the tet caster counts them).
+  auto IntegrateWithIsos = [&](const Ray& r, double ta, double dt, double len, double sa, double sb,
+                             const ExactIntegrator& rule, RayAccum& acc) {
+    double fr[8];
+    int fi[8], n = 0;
+    for (std::size_t k = 0; k < Isos.size() && n < 8; ++k)
+    {
+      const double v = Isos[k].value;
+      if ((sa < v) != (sb < v))
+      {
+        fr[n] = (v - sa) / (sb - sa);
+        fi[n++] = static_cast<int>(k);
+      }
+    }
+    for (int a = 1; a < n; ++a)
+    {
+      for (int b = a; b > 0 && fr[b] < fr[b - 1]; --b)
+      {
+        std::swap(fr[b], fr[b - 1]);
+        std::swap(fi[b], fi[b - 1]);
+      }
+    }
+    const Vec3 view = r.dir / len;
+    double fa = 0.0, s0 = sa;
+    for (int k = 0; k < n; ++k)
+    {
+      const IsoSurface& iso = Isos[fi[k]];
+      rule.Integrate(s0, iso.value, (fr[k] - fa) * dt * len, acc);
+      fa = fr[k];
+      s0 = iso.value;
+      const Vec3 g = Gradient(r.At(ta + fa * dt));
+      const double gl = Length(g);
+      const double shade = Ambient + Diffuse * (gl > 0 ? std::fabs(Dot(g, view)) / gl : 1.0);
+      for (int ch = 0; ch < 3; ++ch)
+      {
+        acc.rgb[ch] += acc.T * iso.opacity * shade * iso.rgb[ch];
+      }
+      acc.T *= 1.0 - iso.opacity;
+    }
+    rule.Integrate(s0, sb, (1.0 - fa) * dt * len, acc);
+  };
   RenderStats st;
   st.counters = ForEachTile(cam.Width(), cam.Height(), 16,
     [&](const Tile& tile, Counters& c) {
@@ -103,9 +158,13 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
             {
               smax = std::max(smax, sb);
             }
-            else
+            else if (Isos.empty())
             {
               rule.Integrate(sa, sb, dt * len, acc);
+            }
+            else
+            {
+              IntegrateWithIsos(r, t0 + (k - 1) * dt, dt, len, sa, sb, rule, acc);
             }
             sa = sb;
           }

@@ -30,10 +30,18 @@ public:
   void SetSamplesPerVoxel(double n) { PerVoxel = n < 1 ? 1 : n; }
   /// Maximum-intensity projection instead of emission-absorption.
   void SetMaxIntensity(bool on) { Mip = on; }
+  /// Iso-surfaces composited where the trilinear field crosses them between samples, shaded by the
+  /// same headlight as the tet caster (ambient + diffuse |n . view|) with the field's own gradient.
+  void SetIsoSurfaces(std::vector<IsoSurface> isos, double ambient = 0.3, double diffuse = 0.7)
+  {
+    Isos = std::move(isos), Ambient = ambient, Diffuse = diffuse;
+  }
 
   RenderStats Render(const Camera& cam, Image& img, Progress* progress = nullptr) const;
   /// Trilinear value at p (p inside the box).
   double Sample(const Vec3& p) const;
+  /// Gradient of the trilinear field at p by central differences over half the smallest spacing.
+  Vec3 Gradient(const Vec3& p) const;
   const Box3& Bounds() const { return Box; }
 
 private:
@@ -44,6 +52,8 @@ private:
   TransferFunction TF;
   double PerVoxel = 2;
   bool Mip = false;
+  std::vector<IsoSurface> Isos;
+  double Ambient = 0.3, Diffuse = 0.7;
 };
 } // namespace art
 

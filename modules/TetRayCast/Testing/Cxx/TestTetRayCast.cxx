@@ -4,6 +4,7 @@
 #include "MeshFixtures.h"
 #include "ParallelTiles.h"
 #include "TetRayCaster.h"
+#include "VoxelReferenceCaster.h"
 
 #include <gtest/gtest.h>
 #include <vtkCamera.h>
@@ -184,6 +185,54 @@ TEST(TetRayCast, SphereIsoSurfaceLiesAtTheRadius)
     ++hits;
   }
   EXPECT_EQ(hits, 40);
+}
+
+TEST(VoxelReferenceCaster, IsoSurfaceOfASphere)
+{
+  // The reference composites iso-surfaces too (so --iso renders get error figures): a sphere's
+  // distance field seen by a parallel camera is an opaque disc of the sphere's radius, lit
+  // head-on at its centre (ambient + diffuse = 1) and darker towards the rim.
+  const Vec3 c(0.1, -0.05, 0.02);
+  const double R = 0.6, h = 0.1;
+  const int n = 21;
+  std::vector<double> v;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        v.push_back(Length(Vec3(-1 + i * h, -1 + j * h, -1 + k * h) - c));
+  const int dims[3] = { n, n, n };
+  VoxelReferenceCaster rc(v, dims, { -1, -1, -1 }, { h, h, h },
+    TransferFunction({ { 0, { 0, 0, 0 }, 0.0, 0 }, { 2, { 0, 0, 0 }, 0.0, 0 } }));
+  rc.SetIsoSurfaces({ { R, { { 1, 1, 1 } }, 1.0 } }, 0.3, 0.7);
+  vtkNew<vtkCamera> vc;
+  vc->SetPosition(c.x, c.y, 5);
+  vc->SetFocalPoint(c.x, c.y, c.z);
+  vc->SetViewUp(0, 1, 0);
+  vc->SetParallelProjection(1);
+  vc->SetParallelScale(1.0);
+  const Camera cam = Camera::FromVTK(vc, 41, 41);
+  Image img;
+  rc.Render(cam, img);
+  int disc = 0;
+  for (int y = 0; y < 41; ++y)
+    for (int x = 0; x < 41; ++x)
+    {
+      const Ray r = cam.Generate(x, y);
+      const double d = std::hypot(r.org.x - c.x, r.org.y - c.y);
+      const float* p = img.Pixel(x, y);
+      if (d < R - 0.05)
+      {
+        ++disc;
+        EXPECT_NEAR(p[3], 1.0, 1e-9) << x << "," << y;
+      }
+      else if (d > R + 0.05)
+        EXPECT_EQ(p[3], 0.0f) << x << "," << y;
+    }
+  EXPECT_GT(disc, 400);
+  EXPECT_NEAR(img.Pixel(20, 20)[0], 1.0, 0.02); // facing the viewer
+  // 0.537 from the axis, n . view = 0.446: shade 0.61.
+  EXPECT_NEAR(img.Pixel(20, 9)[3], 1.0, 1e-9);
+  EXPECT_NEAR(img.Pixel(20, 9)[0], 0.3 + 0.7 * 0.446, 0.05);
 }
 
 TEST(TetRayCast, MaximumIntensity)
