@@ -191,9 +191,12 @@ private:
   /// Side(u, v) from the carried D x q: the same bits as Side(u.id, v.id).
   static double Side(const Corner& u, const Corner& v)
   {
-    // Both products, then a select: the id order is as good as random, a branch would miss.
-    const double uv = Dot(u.dq, v.q), vu = -Dot(v.dq, u.q);
-    return u.id < v.id ? uv : vu;
+    // Selects rather than branches: the id order is as good as random, a branch would miss.
+    static constexpr double sign[2] = { -1.0, 1.0 };
+    const bool lt = u.id < v.id;
+    const Corner& lo = lt ? u : v;
+    const Corner& hi = lt ? v : u;
+    return Dot(lo.dq, hi.q) * sign[lt];
   }
 
   const TetMesh& M;
