@@ -32,6 +32,8 @@ struct RayAccum
 
 /// Dawson's integral F(x) = exp(-x^2) int_0^x exp(t^2) dt, to about 1e-15 relative.
 ADAPTIVERTTETRAYCAST_EXPORT double Dawson(double x);
+/// The scaled complementary error function exp(x^2) erfc(x) for x >= 0, to about 1e-15 relative.
+ADAPTIVERTTETRAYCAST_EXPORT double Erfcx(double x);
 
 /// One piece with linear colour and extinction: premultiplied colour C and transmittance T.
 ADAPTIVERTTETRAYCAST_EXPORT void IntegrateLinearPiece(const double c0[3], const double c1[3],
