@@ -28,6 +28,7 @@ struct RayAccum
   double lastS = std::numeric_limits<double>::quiet_NaN();
   double lastRgb[3] = { 0, 0, 0 };
   double lastTau = 0;
+  int lastI = -1; ///< its transfer-function interval (TransferFunction::Locate)
 };
 
 /// Dawson's integral F(x) = exp(-x^2) int_0^x exp(t^2) dt, to about 1e-15 relative.
