@@ -98,37 +98,33 @@ def engine_image():
 
 cam = ren.GetActiveCamera()
 pos0, fp0, up0 = cam.GetPosition(), cam.GetFocalPoint(), cam.GetViewUp()
-ren.ResetCameraClippingRange()
-volume.SetPosition(10, -5, 3)
-moved_alone = engine_image()
+
+
+def place(position, orientation, scale, to_world, up):
+    """Sets the volume's matrix and puts the camera where to_world takes the original one."""
+    volume.SetOrigin(0, 0, 0)
+    volume.SetPosition(*position)
+    volume.SetOrientation(*orientation)
+    volume.SetScale(scale)
+    cam.SetPosition(*to_world(pos0))
+    cam.SetFocalPoint(*to_world(fp0))
+    cam.SetViewUp(*up)
+    ren.ResetCameraClippingRange()
+    return engine_image()
+
+
+moved_alone = place((10, -5, 3), (0, 0, 0), 1, lambda p: p, up0)
 assert np.abs(moved_alone - engine).max() > 0.1, "moving the volume did not move the image"
-cam.SetPosition(pos0[0] + 10, pos0[1] - 5, pos0[2] + 3)
-cam.SetFocalPoint(fp0[0] + 10, fp0[1] - 5, fp0[2] + 3)
-moved_both = engine_image()
+moved_both = place((10, -5, 3), (0, 0, 0), 1, lambda p: (p[0] + 10, p[1] - 5, p[2] + 3), up0)
 print(f"translated volume and camera: max difference {np.abs(moved_both - engine).max():.2e}")
 assert np.abs(moved_both - engine).max() < 1e-4
 # Rotate 90 degrees about z and scale by 2 about the volume's origin (at 10, -5, 3): the camera,
 # rotated and scaled with it, sees the same picture (lengths are measured in data units).
-volume.SetOrigin(0, 0, 0)
-volume.SetOrientation(0, 0, 90)
-volume.SetScale(2)
-def to_world(p):
-    x, y, z = p
-    return (10 - 2 * y, -5 + 2 * x, 3 + 2 * z)
-cam.SetPosition(*to_world(pos0))
-cam.SetFocalPoint(*to_world(fp0))
-cam.SetViewUp(-up0[1], up0[0], up0[2])
-ren.ResetCameraClippingRange()
-turned = engine_image()
+turned = place((10, -5, 3), (0, 0, 90), 2, lambda p: (10 - 2 * p[1], -5 + 2 * p[0], 3 + 2 * p[2]),
+               (-up0[1], up0[0], up0[2]))
 print(f"rotated and scaled volume and camera: max difference {np.abs(turned - engine).max():.2e}")
 assert np.abs(turned - engine).max() < 1e-4
-volume.SetPosition(0, 0, 0)
-volume.SetOrientation(0, 0, 0)
-volume.SetScale(1)
-cam.SetPosition(*pos0)
-cam.SetFocalPoint(*fp0)
-cam.SetViewUp(*up0)
-ren.ResetCameraClippingRange()
+place((0, 0, 0), (0, 0, 0), 1, lambda p: p, up0)
 
 # Half the rays per axis with ImageSampleDistance 2; iso-surfaces add shaded surfaces.
 mapper.SetImageSampleDistance(2)
