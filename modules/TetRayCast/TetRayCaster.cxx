@@ -40,68 +40,68 @@ struct TetRayCaster::Impl
     int fi[8];
     // Inlined into the walk by force: GCC otherwise calls it once per tet.
     auto visit = [&](int t, const FaceCrossing& in, const FaceCrossing& ex) ART_ALWAYS_INLINE {
-        if (mip)
-        {
-          res.maxScalar = std::max(res.maxScalar, std::max(in.s, ex.s));
-          return true;
-        }
-        const double len = (ex.t - in.t) * dirLen;
-        double fa = 0.0, sa = in.s;
-        // Iso crossings on this segment, half-open so a crossing at a shared face counts once.
-        int n = 0;
-        for (std::size_t k = 0; k < S.isos.size() && n < 8; ++k)
-        {
-          const double v = S.isos[k].value;
-          if ((in.s < v) != (ex.s < v))
-          {
-            fr[n] = (v - in.s) / (ex.s - in.s);
-            fi[n++] = static_cast<int>(k);
-          }
-        }
-        for (int a = 1; a < n; ++a)
-        {
-          for (int b = a; b > 0 && fr[b] < fr[b - 1]; --b)
-          {
-            std::swap(fr[b], fr[b - 1]);
-            std::swap(fi[b], fi[b - 1]);
-          }
-        }
-        for (int k = 0; k < n; ++k)
-        {
-          const IsoSurface& iso = S.isos[fi[k]];
-          rule.Integrate(sa, iso.value, len * (fr[k] - fa), acc);
-          fa = fr[k];
-          sa = iso.value;
-          // Gouraud-style normal: vertex gradients interpolated at the hit point.
-          const double tHit = in.t + fa * (ex.t - in.t);
-          double bw[4];
-          M.Barycentric(t, r.org + r.dir * tHit, bw);
-          const auto& tv = M.Tet(t);
-          Vec3 g;
-          for (int i = 0; i < 4; ++i)
-          {
-            g += M.VertexGradient(tv[i]) * bw[i];
-          }
-          const double shade = S.ambient + S.diffuse * std::fabs(Dot(Normalize(g), view));
-          const double a = iso.opacity;
-          for (int ch = 0; ch < 3; ++ch)
-          {
-            acc.rgb[ch] += acc.T * a * shade * iso.rgb[ch];
-          }
-          acc.T *= 1.0 - a;
-          if (res.firstIso < 0)
-          {
-            res.firstIso = tHit;
-          }
-        }
-        rule.Integrate(sa, ex.s, len * (1.0 - fa), acc);
-        if (acc.Alpha() >= S.earlyTermination)
-        {
-          stop = true;
-          return false;
-        }
+      if (mip)
+      {
+        res.maxScalar = std::max(res.maxScalar, std::max(in.s, ex.s));
         return true;
-      };
+      }
+      const double len = (ex.t - in.t) * dirLen;
+      double fa = 0.0, sa = in.s;
+      // Iso crossings on this segment, half-open so a crossing at a shared face counts once.
+      int n = 0;
+      for (std::size_t k = 0; k < S.isos.size() && n < 8; ++k)
+      {
+        const double v = S.isos[k].value;
+        if ((in.s < v) != (ex.s < v))
+        {
+          fr[n] = (v - in.s) / (ex.s - in.s);
+          fi[n++] = static_cast<int>(k);
+        }
+      }
+      for (int a = 1; a < n; ++a)
+      {
+        for (int b = a; b > 0 && fr[b] < fr[b - 1]; --b)
+        {
+          std::swap(fr[b], fr[b - 1]);
+          std::swap(fi[b], fi[b - 1]);
+        }
+      }
+      for (int k = 0; k < n; ++k)
+      {
+        const IsoSurface& iso = S.isos[fi[k]];
+        rule.Integrate(sa, iso.value, len * (fr[k] - fa), acc);
+        fa = fr[k];
+        sa = iso.value;
+        // Gouraud-style normal: vertex gradients interpolated at the hit point.
+        const double tHit = in.t + fa * (ex.t - in.t);
+        double bw[4];
+        M.Barycentric(t, r.org + r.dir * tHit, bw);
+        const auto& tv = M.Tet(t);
+        Vec3 g;
+        for (int i = 0; i < 4; ++i)
+        {
+          g += M.VertexGradient(tv[i]) * bw[i];
+        }
+        const double shade = S.ambient + S.diffuse * std::fabs(Dot(Normalize(g), view));
+        const double a = iso.opacity;
+        for (int ch = 0; ch < 3; ++ch)
+        {
+          acc.rgb[ch] += acc.T * a * shade * iso.rgb[ch];
+        }
+        acc.T *= 1.0 - a;
+        if (res.firstIso < 0)
+        {
+          res.firstIso = tHit;
+        }
+      }
+      rule.Integrate(sa, ex.s, len * (1.0 - fa), acc);
+      if (acc.Alpha() >= S.earlyTermination)
+      {
+        stop = true;
+        return false;
+      }
+      return true;
+    };
     if (start >= 0)
     {
       // The ray starts inside tet `start` (a camera inside the mesh): from its origin to the face
