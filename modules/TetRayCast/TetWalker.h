@@ -160,14 +160,25 @@ public:
       {
         return;
       }
-      // The exit face reversed is the next tet's entry face, outward for that tet: (c, d, b),
-      // (a, d, c) or (a, b, d). By table rather than by branch: x is as good as random.
+      // The exit face reversed is the next tet's entry face, outward for that tet.
+      if (x == 0)
       {
-        static constexpr int perm[3][4] = { { 2, 3, 1, 0 }, { 0, 3, 2, 1 }, { 0, 1, 3, 2 } };
-        const int cur[4] = { ia, ib, ic, id };
-        ia = cur[perm[x][0]], ib = cur[perm[x][1]], ic = cur[perm[x][2]], id = cur[perm[x][3]];
-        const double nab[3] = { pc, pa, eab }, nbc[3] = { -pb, -pc, pb }, nca[3] = { ebc, eca, -pa };
-        eab = nab[x], ebc = nbc[x], eca = nca[x];
+        const double nab = pc, nbc = -pb, nca = ebc; // (c, d, b)
+        const int freed = ia;
+        ia = ic, ic = ib, ib = id, id = freed;
+        eab = nab, ebc = nbc, eca = nca;
+      }
+      else if (x == 1)
+      {
+        const double nab = pa, nbc = -pc, nca = eca; // (a, d, c)
+        std::swap(ib, id);
+        eab = nab, ebc = nbc, eca = nca;
+      }
+      else
+      {
+        const double nbc = pb, nca = -pa; // (a, b, d)
+        std::swap(ic, id);
+        ebc = nbc, eca = nca;
       }
       t = TetMesh::LinkTet(link);
       entryFace = TetMesh::LinkFace(link);
@@ -191,12 +202,7 @@ private:
   /// Side(u, v) from the carried D x q: the same bits as Side(u.id, v.id).
   static double Side(const Corner& u, const Corner& v)
   {
-    // Selects rather than branches: the id order is as good as random, a branch would miss.
-    static constexpr double sign[2] = { -1.0, 1.0 };
-    const bool lt = u.id < v.id;
-    const Corner& lo = lt ? u : v;
-    const Corner& hi = lt ? v : u;
-    return Dot(lo.dq, hi.q) * sign[lt];
+    return u.id < v.id ? Dot(u.dq, v.q) : -Dot(v.dq, u.q);
   }
 
   const TetMesh& M;
