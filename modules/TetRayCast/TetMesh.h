@@ -59,6 +59,7 @@ public:
   /// Face f of tet t as a link: 4 * neighbour + the neighbour's face index of the shared face, or
   /// -1 on the boundary. The walker enters the neighbour knowing which of its faces it came through.
   int Link(std::size_t t, int f) const { return Links[t][f]; }
+  const std::array<int, 4>& LinkRow(std::size_t t) const { return Links[t]; }
   static int LinkTet(int link) { return link < 0 ? -1 : link >> 2; }
   static int LinkFace(int link) { return link & 3; }
   /// Outward plane of face f of tet t. Computed from the vertices when asked: the Pluecker walker
