@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 
 namespace cli
 {
@@ -55,15 +56,19 @@ BenchStats TimeRuns(int runs, const std::function<double()>& once)
   return Summarise(std::move(v));
 }
 
-std::string GitCommit(const std::string& sourceDir)
+RunInfo ThisRun()
 {
-  return Shell("git -C '" + sourceDir + "' rev-parse --short HEAD 2>/dev/null");
+  RunInfo r;
+  r.source = std::string(ART_DATA_DIR) + "/..";
+  r.commit = Shell("git -C '" + r.source + "' rev-parse --short HEAD 2>/dev/null");
+  r.cpu = Shell("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'");
+  char date[64];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  r.date = date;
+  return r;
 }
 
-std::string CpuName()
-{
-  return Shell("grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'");
-}
 void FinishResults(const std::string& chartScript, const std::string& stem)
 {
   const auto r = RunProgram({ "/usr/bin/python3", chartScript, stem + ".json", stem + ".png" }, "");

@@ -17,10 +17,13 @@ struct BenchStats
 BenchStats Summarise(std::vector<double> v);
 /// One warm-up call, then `runs` calls; each returns the seconds it measured.
 BenchStats TimeRuns(int runs, const std::function<double()>& once);
-/// Short commit of the source tree at `sourceDir` ("" when it is not a git checkout).
-std::string GitCommit(const std::string& sourceDir);
-/// The CPU's model name.
-std::string CpuName();
+/// What a result belongs to: the source tree (its chart scripts live there), its short commit
+/// ("" outside a git checkout), the CPU's model name and the UTC time of the run.
+struct RunInfo
+{
+  std::string source, commit, cpu, date;
+};
+RunInfo ThisRun();
 /// Draws STEM.png from STEM.json with a matplotlib script (throws art::Error naming the script
 /// when it fails) and prints where the JSON, markdown table and chart are.
 void FinishResults(const std::string& chartScript, const std::string& stem);

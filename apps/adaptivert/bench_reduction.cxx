@@ -24,7 +24,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -248,12 +247,8 @@ int Run(const cli::Options& o)
   }
 
   // JSON, markdown, chart.
-  const std::string src = std::string(ART_DATA_DIR) + "/..";
-  const std::string commit = cli::GitCommit(src);
-  const std::string cpu = cli::CpuName();
-  char date[64];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  const cli::RunInfo run = cli::ThisRun();
+  const std::string &src = run.source, &commit = run.commit, &cpu = run.cpu, &date = run.date;
   std::vector<cli::Json> jr;
   for (const auto& w : rows)
   {

@@ -32,7 +32,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -800,12 +799,8 @@ int Run(const cli::Options& o)
     jratios.push_back(j);
   }
 
-  const std::string src = std::string(ART_DATA_DIR) + "/..";
-  const std::string commit = cli::GitCommit(src);
-  const std::string cpu = cli::CpuName();
-  char date[64];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  const cli::RunInfo run = cli::ThisRun();
+  const std::string &src = run.source, &commit = run.commit, &cpu = run.cpu, &date = run.date;
   cli::Json top;
   top.Set("benchmark", "triangles").Set("date", date).Set("commit", commit).Set("cpu", cpu);
   top.Set("cores", static_cast<long long>(std::thread::hardware_concurrency()));
