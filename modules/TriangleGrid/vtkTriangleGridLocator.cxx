@@ -16,6 +16,20 @@
 
 vtkStandardNewMacro(vtkTriangleGridLocator);
 
+namespace
+{
+// VTK's line queries take a segment p1 -> p2 with t in [0, 1]: the ray from p1 along p2 - p1.
+art::Ray SegmentRay(const double p1[3], const double p2[3])
+{
+  art::Ray r;
+  r.org = art::Vec3(p1);
+  r.dir = art::Vec3(p2) - r.org;
+  r.tmin = 0;
+  r.tmax = 1;
+  return r;
+}
+} // namespace
+
 vtkTriangleGridLocator::vtkTriangleGridLocator() = default;
 vtkTriangleGridLocator::~vtkTriangleGridLocator() = default;
 
@@ -76,11 +90,7 @@ int vtkTriangleGridLocator::IntersectWithLine(const double p1[3], const double p
   {
     return 0;
   }
-  art::Ray r;
-  r.org = art::Vec3(p1);
-  r.dir = art::Vec3(p2) - r.org;
-  r.tmin = 0;
-  r.tmax = 1;
+  const art::Ray r = SegmentRay(p1, p2);
   art::Hit h;
   art::Counters c;
   if (!this->Engine->Closest(r, h, c))
@@ -119,11 +129,7 @@ int vtkTriangleGridLocator::IntersectWithLine(
   {
     return 0;
   }
-  art::Ray r;
-  r.org = art::Vec3(p1);
-  r.dir = art::Vec3(p2) - r.org;
-  r.tmin = 0;
-  r.tmax = 1;
+  art::Ray r = SegmentRay(p1, p2); // tmax is widened below for the inside test
   std::vector<art::Hit> hits;
   art::Counters c;
   this->Engine->All(r, hits, c);
@@ -158,11 +164,7 @@ void vtkTriangleGridLocator::FindCellsAlongLine(const double p1[3], const double
   {
     return;
   }
-  art::Ray r;
-  r.org = art::Vec3(p1);
-  r.dir = art::Vec3(p2) - r.org;
-  r.tmin = 0;
-  r.tmax = 1;
+  const art::Ray r = SegmentRay(p1, p2);
   std::vector<long long> ids;
   art::Counters c;
   this->Engine->Candidates(r, ids, c);
