@@ -32,3 +32,35 @@ function(art_add_python_test name script)
     LABELS "python;${arg_LABELS}"
     ENVIRONMENT "PYTHONPATH=${ART_PYTHONPATH};ART_SOURCE_DIR=${CMAKE_SOURCE_DIR};ART_SHARED_DATA=${ART_SHARED_DATA};ART_TEST_OUTPUT=${ART_TEST_OUTPUT};ART_BIN=${CMAKE_BINARY_DIR}/bin")
 endfunction()
+
+# An image regression test (F3D style): `adaptivert render ARGS -o OUT`, then `adaptivert compare`
+# against tests/baselines/BASELINE with PSNR and SSIM floors (cmake/RenderCompare.cmake).
+function(art_render_baseline_test name)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "BASELINE;MIN_PSNR;MIN_SSIM" "ARGS")
+  string(REPLACE ";" "|" _args "${arg_ARGS}") # the script splits on |
+  add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} "-DART=$<TARGET_FILE:adaptivert>" "-DARGS=${_args}"
+    "-DOUT=${ART_TEST_OUTPUT}/${arg_BASELINE}" "-DBASELINE=${CMAKE_SOURCE_DIR}/tests/baselines/${arg_BASELINE}"
+    "-DMIN_PSNR=${arg_MIN_PSNR}" "-DMIN_SSIM=${arg_MIN_SSIM}"
+    -P "${CMAKE_CURRENT_FUNCTION_LIST_DIR}/RenderCompare.cmake")
+  set_tests_properties(${name} PROPERTIES LABELS image)
+endfunction()
+
+# A command-line check, F3D style (tests/cli/expect.cmake runs one command and asserts its exit
+# code and what it prints): art_expect_test(<test name> [PROGRAM <exe>] EXIT <code>
+# [STDOUT <regex>] [STDERR <regex>] [ONE_LINE_STDERR] [LABELS ..] ARGS ...). PROGRAM defaults to
+# the adaptivert tool, LABELS to unit.
+function(art_expect_test name)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "ONE_LINE_STDERR" "PROGRAM;EXIT;STDOUT;STDERR" "ARGS;LABELS")
+  if(NOT arg_PROGRAM)
+    set(arg_PROGRAM "$<TARGET_FILE:adaptivert>")
+  endif()
+  if(NOT arg_LABELS)
+    set(arg_LABELS unit)
+  endif()
+  string(REPLACE ";" "|" _args "${arg_ARGS}") # expect.cmake splits on |
+  add_test(NAME ${name} COMMAND ${CMAKE_COMMAND}
+    "-DCMD=${arg_PROGRAM}" "-DARGS=${_args}" "-DEXIT=${arg_EXIT}"
+    "-DSTDOUT=${arg_STDOUT}" "-DSTDERR=${arg_STDERR}" "-DONE_LINE=${arg_ONE_LINE_STDERR}"
+    -P "${CMAKE_SOURCE_DIR}/tests/cli/expect.cmake")
+  set_tests_properties(${name} PROPERTIES LABELS "${arg_LABELS}")
+endfunction()
