@@ -26,11 +26,7 @@ public:
   template <class Visitor>
   void Walk(const RayPrep& p, double tmin, double tmax, Visitor& visit, Counters& c) const
   {
-    Ray r;
-    r.org = p.org;
-    r.dir = p.dir;
-    r.tmin = tmin;
-    r.tmax = tmax;
+    const Ray r = p.Segment(tmin, tmax);
     double t0, t1;
     if (Nodes.empty() || !Root.Clip(r, t0, t1))
     {

@@ -41,11 +41,7 @@ public:
     {
       return;
     }
-    Ray r;
-    r.org = p.org;
-    r.dir = p.dir;
-    r.tmin = tmin;
-    r.tmax = tmax;
+    const Ray r = p.Segment(tmin, tmax);
     double t0, t1;
     if (!Root.Clip(r, t0, t1))
     {

@@ -40,6 +40,17 @@ struct RayPrep
     Sz = 1.0 / dir[kz];
     invLen = 1.0 / Length(dir);
   }
+
+  /// The ray again, limited to [tmin, tmax] (what a structure clips to its box).
+  Ray Segment(double tmin, double tmax) const
+  {
+    Ray r;
+    r.org = org;
+    r.dir = dir;
+    r.tmin = tmin;
+    r.tmax = tmax;
+    return r;
+  }
 };
 
 /// Tests one record; accepts t in [tmin, tmax]. u, v weight vertices 1 and 2.
