@@ -55,6 +55,7 @@ std::string Grouped(long long n)
 
 void Declare(cli::Options& o)
 {
+  o.Add("array", 0, "NAME", "point array to reduce (default: the active scalars)");
   o.Add("tets", 't', "N", "stop at N tetrahedra (or N% of the voxel count)");
   o.Add("max-error", 'e', "E", "stop when the error is at most E data units (E% of the scalar range)");
   o.Add("metric", 0, "rms|max", "which error --max-error bounds", "rms");
@@ -96,7 +97,7 @@ int Run(const cli::Options& o)
     throw cli::UsageError("--refine-fraction must be in (0, 4] and --tolerance in (0, 1)");
   }
 
-  auto image = art::LoadVolume(in);
+  auto image = art::LoadVolume(in, o.Get("array"));
   const art::VoxelVolume volume = art::VolumeFromImage(image, in);
   const long long voxels = volume.NumberOfVoxels();
   if (o.Has("tf"))

@@ -43,6 +43,7 @@ double Seconds(std::chrono::steady_clock::time_point t0)
 
 void Declare(cli::Options& o)
 {
+  o.Add("array", 0, "NAME", "point (or cell) array to render (default: the active scalars)");
   o.Add("tf", 0, "NAME|FILE",
     "transfer function: a preset (ct-skin-bone, ct-bone, grey-ramp, constant) or a file of "
     "'scalar r g b opacity' lines",
@@ -129,7 +130,7 @@ int Run(const cli::Options& o, const std::string& input)
   const auto t0 = std::chrono::steady_clock::now();
   if (art::KindOf(input) == art::DataKind::Volume)
   {
-    volume = art::LoadVolume(input);
+    volume = art::LoadVolume(input, o.Get("array"));
     if (!volume->GetPointData()->GetScalars())
     {
       throw art::Error("volume has no scalars", input);
@@ -197,7 +198,7 @@ int Run(const cli::Options& o, const std::string& input)
   else
   {
     auto grid = art::LoadMesh(input);
-    mesh = art::TetMesh::FromVTK(grid, {}, &note, input);
+    mesh = art::TetMesh::FromVTK(grid, o.Get("array"), &note, input);
     meshLabel = "tet mesh";
     range[0] = mesh.ScalarRange(0), range[1] = mesh.ScalarRange(1);
     settings = MakeSettings(o, MakeTF(o, range[0], range[1]));

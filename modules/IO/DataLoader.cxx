@@ -5,15 +5,19 @@
 #include "PlyCheck.h"
 
 #include <vtkAlgorithm.h>
+#include <vtkAppendFilter.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkDICOMImageReader.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
 #include <vtkExecutive.h>
 #include <vtkImageData.h>
 #include <vtkMetaImageReader.h>
 #include <vtkNIFTIImageReader.h>
+#include <vtkNew.h>
 #include <vtkNrrdReader.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
@@ -23,6 +27,8 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLImageDataReader.h>
 #include <vtkXMLPolyDataReader.h>
+#include <vtkXMLRectilinearGridReader.h>
+#include <vtkXMLStructuredGridReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
@@ -38,7 +44,7 @@ namespace
 {
 const std::set<std::string> VolumeExt = { ".mha", ".mhd", ".nii", ".nii.gz", ".vti", ".nrrd", ".nhdr" };
 const std::set<std::string> SurfaceExt = { ".ply", ".obj", ".stl", ".vtp" };
-const std::set<std::string> MeshExt = { ".vtu", ".vtk" };
+const std::set<std::string> MeshExt = { ".vtu", ".vts", ".vtr" };
 
 // Keeps the first error a VTK object reports instead of letting it reach the output window.
 struct ErrorCatcher
@@ -154,6 +160,57 @@ bool HasDicomFile(const std::string& dir)
   }
   return false;
 }
+
+// A legacy .vtk file may hold any data set: its header says which.
+DataKind LegacyKind(const std::string& path)
+{
+  vtkNew<vtkDataSetReader> r;
+  r->SetFileName(path.c_str());
+  ErrorCatcher catcher(r);
+  switch (r->ReadOutputType())
+  {
+    case VTK_STRUCTURED_POINTS:
+    case VTK_IMAGE_DATA:
+      return DataKind::Volume;
+    case VTK_POLY_DATA:
+      return DataKind::Surface;
+    case VTK_UNSTRUCTURED_GRID:
+    case VTK_STRUCTURED_GRID:
+    case VTK_RECTILINEAR_GRID:
+      return DataKind::Mesh;
+    default:
+      throw Error("is not a legacy VTK data set (no readable header)" +
+          (catcher.Message.empty() ? std::string() : ": " + catcher.Message),
+        path);
+  }
+}
+
+// Makes `name` the active scalars of `pd`; without a name keeps the active scalars, or takes the
+// first one-component array when none is active (XML files need not mark one).
+void SelectScalars(vtkPointData* pd, const std::string& name, const std::string& path)
+{
+  if (!name.empty())
+  {
+    if (!pd->GetArray(name.c_str()))
+    {
+      std::string names;
+      for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+      {
+        names += (i ? ", " : "") + std::string(pd->GetArrayName(i) ? pd->GetArrayName(i) : "(unnamed)");
+      }
+      throw Error("has no point array '" + name + "' (it has: " + (names.empty() ? "none" : names) + ")", path);
+    }
+    pd->SetActiveScalars(name.c_str());
+    return;
+  }
+  for (int i = 0; i < pd->GetNumberOfArrays() && !pd->GetScalars(); ++i)
+  {
+    if (pd->GetArray(i) && pd->GetArray(i)->GetNumberOfComponents() == 1 && pd->GetArrayName(i))
+    {
+      pd->SetActiveScalars(pd->GetArrayName(i));
+    }
+  }
+}
 } // namespace
 
 const char* KindName(DataKind k)
@@ -194,17 +251,22 @@ DataKind KindOf(const std::string& path)
   {
     return DataKind::Mesh;
   }
+  if (e == ".vtk")
+  {
+    return LegacyKind(path);
+  }
   throw Error("unknown file type '" + (e.empty() ? std::string("(none)") : e) +
       "' (volumes: .mha .mhd .nii .nii.gz .vti .nrrd or a DICOM folder; surfaces: .ply .obj "
-      ".stl .vtp; meshes: .vtu .vtk)",
+      ".stl .vtp; meshes: .vtu .vts .vtr; any of them: legacy .vtk)",
     path);
 }
 
-vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path)
+vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::string& array)
 {
   if (KindOf(path) != DataKind::Volume)
   {
-    throw Error("is not a volume (expected .mha .mhd .nii .nii.gz .vti .nrrd or a DICOM folder)", path);
+    throw Error("is not a volume (expected .mha .mhd .nii .nii.gz .vti .nrrd, image data in .vtk, or a DICOM folder)",
+      path);
   }
   std::error_code ec;
   const std::string e = LowerExtension(path);
@@ -238,6 +300,12 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path)
     r->SetFileName(path.c_str());
     reader = r;
   }
+  else if (e == ".vtk")
+  {
+    auto r = vtkSmartPointer<vtkDataSetReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
   else
   {
     auto r = vtkSmartPointer<vtkNrrdReader>::New();
@@ -247,6 +315,7 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path)
   RunReader(reader, path);
   auto img = vtkSmartPointer<vtkImageData>::New();
   img->ShallowCopy(reader->GetOutputDataObject(0));
+  SelectScalars(img->GetPointData(), array, path);
   int dims[3];
   img->GetDimensions(dims);
   if (dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0 || !img->GetPointData()->GetScalars())
@@ -262,7 +331,7 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
 {
   if (KindOf(path) != DataKind::Surface)
   {
-    throw Error("is not a surface (expected .ply .obj .stl .vtp)", path);
+    throw Error("is not a surface (expected .ply .obj .stl .vtp or polygons in .vtk)", path);
   }
   const std::string e = LowerExtension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
@@ -282,6 +351,12 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   else if (e == ".stl")
   {
     auto r = vtkSmartPointer<vtkSTLReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (e == ".vtk")
+  {
+    auto r = vtkSmartPointer<vtkDataSetReader>::New();
     r->SetFileName(path.c_str());
     reader = r;
   }
@@ -306,27 +381,48 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)
 {
   if (KindOf(path) != DataKind::Mesh)
   {
-    throw Error("is not a mesh (expected .vtu or .vtk)", path);
+    throw Error("is not a mesh (expected .vtu .vts .vtr, or a grid in .vtk)", path);
   }
-  vtkSmartPointer<vtkDataObject> out;
-  if (LowerExtension(path) == ".vtu")
+  const std::string e = LowerExtension(path);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (e == ".vtu")
   {
     auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
     r->SetFileName(path.c_str());
-    RunReader(r, path);
-    out = r->GetOutputDataObject(0);
+    reader = r;
+  }
+  else if (e == ".vts")
+  {
+    auto r = vtkSmartPointer<vtkXMLStructuredGridReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  else if (e == ".vtr")
+  {
+    auto r = vtkSmartPointer<vtkXMLRectilinearGridReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
   }
   else
   {
     auto r = vtkSmartPointer<vtkDataSetReader>::New();
     r->SetFileName(path.c_str());
-    RunReader(r, path);
-    out = r->GetOutputDataObject(0);
+    reader = r;
   }
-  auto ug = vtkUnstructuredGrid::SafeDownCast(out);
+  RunReader(reader, path);
+  vtkSmartPointer<vtkUnstructuredGrid> ug = vtkUnstructuredGrid::SafeDownCast(reader->GetOutputDataObject(0));
   if (!ug)
   {
-    throw Error("does not hold an unstructured grid", path);
+    // Structured and rectilinear grids become hexahedra; TetMesh tetrahedralises them.
+    auto* ds = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+    if (!ds)
+    {
+      throw Error("does not hold a grid", path);
+    }
+    vtkNew<vtkAppendFilter> toUG;
+    toUG->SetInputData(ds);
+    toUG->Update();
+    ug = toUG->GetOutput();
   }
   if (ug->GetNumberOfCells() == 0)
   {

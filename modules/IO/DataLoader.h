@@ -1,4 +1,5 @@
-// DataLoader: reads any volume, surface or tetrahedral mesh VTK can read, chosen by extension,
+// DataLoader: reads any volume, surface or mesh VTK can read, chosen by extension (a legacy .vtk
+// file by its header),
 // and turns every failure (missing file, unknown type, truncated or garbage content, a VTK
 // reader error) into one art::Error that names the file and the problem.
 #ifndef art_DataLoader_h
@@ -21,14 +22,17 @@ enum class DataKind
 {
   Volume,  ///< vtkImageData: .mha .mhd .nii .nii.gz .vti .nrrd .nhdr, or a DICOM folder
   Surface, ///< vtkPolyData: .ply .obj .stl .vtp
-  Mesh     ///< vtkUnstructuredGrid: .vtu .vtk
+  Mesh     ///< vtkUnstructuredGrid: .vtu, or .vts / .vtr grids as hexahedra
+  // A legacy .vtk file is whichever of the three its header names.
 };
 
 /// The kind a path will load as; throws art::Error for a missing file or an unknown extension.
 ADAPTIVERTIO_EXPORT DataKind KindOf(const std::string& path);
 ADAPTIVERTIO_EXPORT const char* KindName(DataKind k);
 
-ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path);
+/// The volume's point array `array` becomes its scalars (default: the active scalars, else the
+/// first one-component array); a missing array is an art::Error that lists the ones there are.
+ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::string& array = {});
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path);
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path);
 /// Loads whatever the extension says; the result is one of the three types above.

@@ -6,6 +6,8 @@
 #include <vtkCellArray.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
+#include <vtkCellData.h>
+#include <vtkCellDataToPointData.h>
 #include <vtkDataSetTriangleFilter.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -473,7 +475,41 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
   }
   if (!s)
   {
-    throw Error(array.empty() ? "mesh has no point scalars" : "mesh has no point array '" + array + "'", file);
+    // Cell scalars (common in simulation output) are averaged to the points, as VTK's
+    // vtkCellDataToPointData does, since the walk interpolates linearly inside each tet.
+    vtkCellData* cd = ug->GetCellData();
+    vtkDataArray* cs = array.empty() ? cd->GetScalars() : cd->GetArray(array.c_str());
+    for (int i = 0; i < cd->GetNumberOfArrays() && !cs && array.empty(); ++i)
+    {
+      cs = cd->GetArray(i) && cd->GetArray(i)->GetNumberOfComponents() == 1 ? cd->GetArray(i) : nullptr;
+    }
+    if (!cs || !cs->GetName())
+    {
+      std::string names;
+      for (vtkFieldData* fd : { static_cast<vtkFieldData*>(ug->GetPointData()), static_cast<vtkFieldData*>(cd) })
+      {
+        for (int i = 0; i < fd->GetNumberOfArrays(); ++i)
+        {
+          names += (names.empty() ? "" : ", ") + std::string(fd->GetArrayName(i) ? fd->GetArrayName(i) : "(unnamed)");
+        }
+      }
+      throw Error(array.empty() ? "mesh has no point scalars"
+                                : "mesh has no point or cell array '" + array + "' (it has: " +
+            (names.empty() ? std::string("none") : names) + ")",
+        file);
+    }
+    vtkNew<vtkCellDataToPointData> toPoints;
+    toPoints->SetInputData(ug);
+    toPoints->ProcessAllArraysOff();
+    toPoints->AddCellDataArray(cs->GetName());
+    toPoints->Update();
+    const std::string name = cs->GetName();
+    ug = vtkUnstructuredGrid::SafeDownCast(toPoints->GetOutput());
+    s = ug->GetPointData()->GetArray(name.c_str());
+    if (note)
+    {
+      *note += std::string(note->empty() ? "" : "; ") + "cell scalars '" + name + "' were averaged to the points";
+    }
   }
   const vtkIdType np = ug->GetNumberOfPoints();
   std::vector<Vec3> pts(np);

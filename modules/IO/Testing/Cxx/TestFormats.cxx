@@ -1,10 +1,14 @@
-// Every volume and surface format the loader claims is read back with the right geometry and
+// Every volume, surface and grid format the loader claims is read back with the right geometry and
 // values: files are written here with VTK's writers (or by hand for NRRD), then loaded.
 #include "DataLoader.h"
 #include "Error.h"
 
+#include <vtkCellType.h>
 #include <vtkDataArray.h>
+#include <vtkDataSetWriter.h>
+#include <vtkDoubleArray.h>
 #include <vtkImageData.h>
+#include <vtkImageDataToPointSet.h>
 #include <vtkMetaImageWriter.h>
 #include <vtkNIFTIImageWriter.h>
 #include <vtkNew.h>
@@ -12,11 +16,15 @@
 #include <vtkPLYWriter.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkRectilinearGrid.h>
 #include <vtkSTLWriter.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkShortArray.h>
 #include <vtkSphereSource.h>
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLRectilinearGridWriter.h>
+#include <vtkXMLStructuredGridWriter.h>
 
 #include <gtest/gtest.h>
 
@@ -85,7 +93,7 @@ bool WriteSurface(vtkPolyData* pd, const std::string& path)
 }
 
 template <class Writer>
-void WriteVolume(vtkImageData* img, const std::string& path)
+void WriteVolume(vtkDataObject* img, const std::string& path)
 {
   vtkNew<Writer> w;
   w->SetInputData(img);
@@ -187,5 +195,93 @@ TEST(Formats, EverySurfaceFormatKeepsTheTriangles)
     {
       EXPECT_NEAR(a[i], b[i], 1e-5) << name;
     }
+  }
+}
+
+// A legacy .vtk file is read as whatever its header holds: image data as a volume, polygons as a
+// surface, unstructured, structured and rectilinear grids as a mesh (grids as hexahedra or voxels).
+TEST(Formats, LegacyVtkByContentAndXmlGrids)
+{
+  auto img = SmallVolume();
+  WriteVolume<vtkDataSetWriter>(img, Dir() + "/v.vtk");
+  EXPECT_EQ(art::KindOf(Dir() + "/v.vtk"), art::DataKind::Volume);
+  ExpectSameVolume(img, art::LoadVolume(Dir() + "/v.vtk"));
+
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  ASSERT_TRUE(WriteSurface<vtkDataSetWriter>(sphere->GetOutput(), Dir() + "/s.vtk"));
+  EXPECT_EQ(art::KindOf(Dir() + "/s.vtk"), art::DataKind::Surface);
+  EXPECT_EQ(art::LoadSurface(Dir() + "/s.vtk")->GetNumberOfPolys(), sphere->GetOutput()->GetNumberOfPolys());
+
+  // The same 11 x 5 x 3 points as a structured grid (legacy and XML) and a rectilinear grid.
+  vtkNew<vtkImageDataToPointSet> toGrid;
+  toGrid->SetInputData(img);
+  toGrid->Update();
+  vtkNew<vtkRectilinearGrid> rect;
+  rect->SetDimensions(11, 5, 3);
+  vtkNew<vtkDoubleArray> axis[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    for (int i = 0; i < img->GetDimensions()[a]; ++i)
+    {
+      axis[a]->InsertNextValue(img->GetOrigin()[a] + i * img->GetSpacing()[a]);
+    }
+  }
+  rect->SetXCoordinates(axis[0]);
+  rect->SetYCoordinates(axis[1]);
+  rect->SetZCoordinates(axis[2]);
+  rect->GetPointData()->SetScalars(img->GetPointData()->GetScalars());
+  WriteVolume<vtkDataSetWriter>(toGrid->GetOutput(), Dir() + "/g.vtk");
+  WriteVolume<vtkXMLStructuredGridWriter>(toGrid->GetOutput(), Dir() + "/g.vts");
+  WriteVolume<vtkXMLRectilinearGridWriter>(rect, Dir() + "/g.vtr");
+  for (const std::string name : { "g.vtk", "g.vts", "g.vtr" })
+  {
+    EXPECT_EQ(art::KindOf(Dir() + "/" + name), art::DataKind::Mesh) << name;
+    auto ug = art::LoadMesh(Dir() + "/" + name);
+    EXPECT_EQ(ug->GetNumberOfCells(), 10 * 4 * 2) << name;
+    EXPECT_TRUE(ug->GetCellType(0) == VTK_HEXAHEDRON || ug->GetCellType(0) == VTK_VOXEL) << name;
+    ASSERT_NE(ug->GetPointData()->GetScalars(), nullptr) << name;
+    EXPECT_EQ(ug->GetPointData()->GetScalars()->GetTuple1(17), img->GetPointData()->GetScalars()->GetTuple1(17));
+  }
+
+  std::ofstream(Dir() + "/junk.vtk") << "not a VTK file\n";
+  try
+  {
+    art::KindOf(Dir() + "/junk.vtk");
+    ADD_FAILURE() << "junk.vtk was classified";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("junk.vtk: is not a legacy VTK data set"), std::string::npos) << e.what();
+  }
+}
+
+// A volume with several arrays and none active: the first single-component array is taken, a
+// named one on request, and a missing name lists what there is.
+TEST(Formats, VolumeArraySelection)
+{
+  auto img = SmallVolume();
+  vtkNew<vtkDoubleArray> twice;
+  twice->SetName("twice");
+  twice->SetNumberOfTuples(img->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < twice->GetNumberOfTuples(); ++i)
+  {
+    twice->SetValue(i, 2 * img->GetPointData()->GetScalars()->GetTuple1(i));
+  }
+  img->GetPointData()->AddArray(twice);
+  img->GetPointData()->SetActiveScalars(nullptr);
+  WriteVolume<vtkXMLImageDataWriter>(img, Dir() + "/two.vti");
+  EXPECT_EQ(std::string(art::LoadVolume(Dir() + "/two.vti")->GetPointData()->GetScalars()->GetName()), "scalars");
+  auto t = art::LoadVolume(Dir() + "/two.vti", "twice");
+  EXPECT_EQ(t->GetPointData()->GetScalars()->GetTuple1(3), twice->GetValue(3));
+  try
+  {
+    art::LoadVolume(Dir() + "/two.vti", "density");
+    ADD_FAILURE() << "a missing array loaded";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("no point array 'density' (it has: scalars, twice)"), std::string::npos)
+      << e.what();
   }
 }

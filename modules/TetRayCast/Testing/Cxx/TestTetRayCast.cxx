@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <vtkCamera.h>
 #include <vtkCellType.h>
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -262,7 +263,21 @@ TEST(TetMesh, FromVTKAndBadMeshes)
   vtkIdType t0[4] = { 0, 1, 2, 3 }, t1[4] = { 1, 2, 3, 4 };
   ug->InsertNextCell(VTK_TETRA, 4, t0);
   ug->InsertNextCell(VTK_TETRA, 4, t1);
-  EXPECT_THROW(TetMesh::FromVTK(ug), Error); // no point scalars
+  EXPECT_THROW(TetMesh::FromVTK(ug), Error); // no scalars at all
+  // Cell scalars only: averaged to the points (as vtkCellDataToPointData does), with a note.
+  vtkNew<vtkDoubleArray> cs;
+  cs->SetName("pressure");
+  cs->InsertNextValue(2.0);
+  cs->InsertNextValue(6.0);
+  ug->GetCellData()->SetScalars(cs);
+  std::string cellNote;
+  const TetMesh cm = TetMesh::FromVTK(ug, {}, &cellNote);
+  EXPECT_NE(cellNote.find("cell scalars 'pressure' were averaged to the points"), std::string::npos) << cellNote;
+  EXPECT_DOUBLE_EQ(cm.Scalars()[0], 2.0); // only in tet 0
+  EXPECT_DOUBLE_EQ(cm.Scalars()[4], 6.0); // only in tet 1
+  EXPECT_DOUBLE_EQ(cm.Scalars()[1], 4.0); // shared
+  EXPECT_THROW(TetMesh::FromVTK(ug, "temperature"), Error);
+  ug->GetCellData()->Initialize();
   vtkNew<vtkDoubleArray> s;
   s->SetName("f");
   for (int i = 0; i < 6; ++i)
