@@ -1,7 +1,6 @@
 // DataLoader: reads any volume, surface or mesh VTK can read, chosen by extension (a legacy .vtk
-// file by its header),
-// and turns every failure (missing file, unknown type, truncated or garbage content, a VTK
-// reader error) into one art::Error that names the file and the problem.
+// file by its header), and turns every failure (missing file, unknown type, truncated or garbage
+// content, a VTK reader error) into one art::Error that names the file and the problem.
 #ifndef art_DataLoader_h
 #define art_DataLoader_h
 
