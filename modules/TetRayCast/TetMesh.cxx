@@ -93,13 +93,6 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
   for (std::size_t t = 0; t < nt; ++t)
   {
     auto& v = Tets[t];
-    for (int id : v)
-    {
-      if (id < 0 || id >= np)
-      {
-        throw Error("tet " + std::to_string(t) + " refers to point " + std::to_string(id) + " of " + std::to_string(np));
-      }
-    }
     Vec3 e1 = Points[v[1]] - Points[v[0]], e2 = Points[v[2]] - Points[v[0]], e3 = Points[v[3]] - Points[v[0]];
     double det = Dot(e1, Cross(e2, e3));
     if (det < 0)
@@ -399,16 +392,15 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
   {
     throw Error("volume too large for full-resolution tets", file);
   }
-  double o[3], h[3];
-  image->GetOrigin(o);
-  image->GetSpacing(h);
   std::vector<Vec3> pts(np);
   std::vector<double> val(np);
   for (int k = 0, id = 0; k < d[2]; ++k)
     for (int j = 0; j < d[1]; ++j)
       for (int i = 0; i < d[0]; ++i, ++id)
       {
-        pts[id] = Vec3(o[0] + i * h[0], o[1] + j * h[1], o[2] + k * h[2]);
+        double p[3];
+        image->TransformContinuousIndexToPhysicalPoint(i, j, k, p); // origin, spacing and direction
+        pts[id] = Vec3(p);
         val[id] = s->GetComponent(id, 0);
       }
   static const int five[5][4] = { { 0, 1, 2, 4 }, { 3, 1, 2, 7 }, { 5, 1, 4, 7 }, { 6, 2, 4, 7 }, { 1, 2, 4, 7 } };

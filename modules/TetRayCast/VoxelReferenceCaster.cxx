@@ -7,6 +7,7 @@
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
 
 #include <algorithm>
@@ -43,7 +44,29 @@ VoxelReferenceCaster VoxelReferenceCaster::FromVTK(vtkImageData* image, Transfer
   {
     v[i] = s->GetComponent(static_cast<vtkIdType>(i), 0);
   }
-  return VoxelReferenceCaster(std::move(v), d, Vec3(o), Vec3(h), std::move(tf));
+  VoxelReferenceCaster rc(std::move(v), d, Vec3(o), Vec3(h), std::move(tf));
+  if (vtkMatrix3x3* m = image->GetDirectionMatrix())
+  {
+    rc.SetDirection(m->GetData());
+  }
+  return rc;
+}
+
+void VoxelReferenceCaster::SetDirection(const double r[9])
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      const double rr = r[i] * r[j] + r[3 + i] * r[3 + j] + r[6 + i] * r[6 + j]; // (R^T R)_ij
+      if (std::fabs(rr - (i == j ? 1.0 : 0.0)) > 1e-6)
+      {
+        throw Error("the volume's direction matrix is not a rotation");
+      }
+    }
+  }
+  std::copy(r, r + 9, R);
+  Rotated = !(r[0] == 1 && r[4] == 1 && r[8] == 1);
 }
 
 double VoxelReferenceCaster::Sample(const Vec3& p) const
@@ -139,7 +162,17 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
         for (int x = tile.x0; x < tile.x1; ++x)
         {
           ++c.rays;
-          const Ray r = cam.Generate(x, y);
+          // Into the volume's own frame (a rotation about the origin: t and lengths unchanged).
+          Ray r = cam.Generate(x, y);
+          if (Rotated)
+          {
+            const Vec3 q = r.org - O, d = r.dir;
+            for (int a = 0; a < 3; ++a)
+            {
+              r.org[a] = O[a] + R[a] * q.x + R[3 + a] * q.y + R[6 + a] * q.z;
+              r.dir[a] = R[a] * d.x + R[3 + a] * d.y + R[6 + a] * d.z;
+            }
+          }
           double t0, t1;
           if (!Box.Clip(r, t0, t1) || !(t1 > t0))
           {

@@ -24,7 +24,11 @@ public:
   /// Point-sampled volume: dims[0] x dims[1] x dims[2] values, x fastest.
   VoxelReferenceCaster(std::vector<double> values, const int dims[3], const Vec3& origin, const Vec3& spacing,
     TransferFunction tf);
+  /// Honours the image's direction matrix (which must be a rotation, possibly with reflection).
   static VoxelReferenceCaster FromVTK(vtkImageData* image, TransferFunction tf);
+  /// Index axes in world coordinates: world = origin + R (i h0, j h1, k h2), R row-major and
+  /// orthonormal (throws art::Error otherwise). Identity by default.
+  void SetDirection(const double r[9]);
 
   /// Samples per smallest voxel spacing (default 2).
   void SetSamplesPerVoxel(double n) { PerVoxel = n < 1 ? 1 : n; }
@@ -38,16 +42,19 @@ public:
   }
 
   RenderStats Render(const Camera& cam, Image& img, Progress* progress = nullptr) const;
-  /// Trilinear value at p (p inside the box).
+  /// Trilinear value at p, in the volume's own axis-aligned frame (p inside the box).
   double Sample(const Vec3& p) const;
   /// Gradient of the trilinear field at p by central differences over half the smallest spacing.
   Vec3 Gradient(const Vec3& p) const;
+  /// The box in the volume's own frame (the world box when the direction is the identity).
   const Box3& Bounds() const { return Box; }
 
 private:
   std::vector<double> V;
   int D[3];
   Vec3 O, H;
+  double R[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  bool Rotated = false;
   Box3 Box;
   TransferFunction TF;
   double PerVoxel = 2;

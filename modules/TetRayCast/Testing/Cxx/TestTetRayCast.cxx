@@ -11,6 +11,7 @@
 #include <vtkCellType.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -316,4 +317,60 @@ TEST(TetMesh, FromVTKAndBadMeshes)
   const TetMesh hm = TetMesh::FromVTK(hex, {}, &note);
   EXPECT_GE(hm.NumberOfTets(), 5u);
   EXPECT_NE(note.find("tetrahedralised"), std::string::npos);
+}
+
+// A volume whose direction matrix turns it 90 degrees about z renders exactly like the same voxels
+// stored already turned (axes swapped, one reversed) with the identity direction: through the
+// full-resolution tets and through the voxel reference alike.
+TEST(VoxelReference, DirectionMatrixMatchesTheTurnedVolume)
+{
+  const int nx = 9, ny = 6, nz = 5;
+  const double h = 0.5;
+  // Linear in the index, so every tetrahedralisation interpolates it exactly.
+  auto value = [](int i, int j, int k) { return 1.0 + 2.0 * i + 0.5 * j + k; };
+  vtkNew<vtkImageData> a, b;
+  a->SetDimensions(nx, ny, nz);
+  a->SetSpacing(h, h, h);
+  a->SetOrigin(1, 2, 3);
+  const double turn[9] = { 0, -1, 0, 1, 0, 0, 0, 0, 1 }; // world = origin + R (index * h)
+  a->SetDirectionMatrix(turn);
+  b->SetDimensions(ny, nx, nz);
+  b->SetSpacing(h, h, h);
+  b->SetOrigin(1 - (ny - 1) * h, 2, 3);
+  vtkNew<vtkDoubleArray> sa, sb;
+  sa->SetNumberOfTuples(nx * ny * nz);
+  sb->SetNumberOfTuples(nx * ny * nz);
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+      {
+        // A's voxel (i, j, k) sits at x = 1 - j h, y = 2 + i h: B's voxel (ny - 1 - j, i, k).
+        sa->SetValue(i + nx * (j + ny * k), value(i, j, k));
+        sb->SetValue((ny - 1 - j) + ny * (i + nx * k), value(i, j, k));
+      }
+  a->GetPointData()->SetScalars(sa);
+  b->GetPointData()->SetScalars(sb);
+  const TransferFunction tf({ { 0, { 1, 0.5, 0 }, 0.0, 0 }, { 25, { 0, 0.5, 1 }, 0.9, 0 } }, 1.0);
+  const TetMesh ma = TetMesh::FromImage(a), mb = TetMesh::FromImage(b);
+  const Camera cam = ViewOf(mb.Bounds(), 48, 40, 30, 20);
+  RenderSettings s;
+  s.tf = tf;
+  s.earlyTermination = 2;
+  Image ia, ib, ra, rb;
+  TetRayCaster(ma, s).Render(cam, ia);
+  TetRayCaster(mb, s).Render(cam, ib);
+  VoxelReferenceCaster::FromVTK(a, tf).Render(cam, ra);
+  VoxelReferenceCaster::FromVTK(b, tf).Render(cam, rb);
+  double tetDiff = 0, refDiff = 0, alpha = 0;
+  for (int y = 0; y < cam.Height(); ++y)
+    for (int x = 0; x < cam.Width(); ++x)
+      for (int c = 0; c < 4; ++c)
+      {
+        tetDiff = std::max(tetDiff, double(std::fabs(ia.Pixel(x, y)[c] - ib.Pixel(x, y)[c])));
+        refDiff = std::max(refDiff, double(std::fabs(ra.Pixel(x, y)[c] - rb.Pixel(x, y)[c])));
+        alpha += ib.Pixel(x, y)[3];
+      }
+  EXPECT_GT(alpha, 0.2 * cam.Width() * cam.Height()); // the volume fills the view
+  EXPECT_LT(refDiff, 1e-6);
+  EXPECT_LT(tetDiff, 1e-5);
 }
