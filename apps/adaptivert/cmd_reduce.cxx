@@ -195,7 +195,9 @@ int Run(const cli::Options& o)
       std::printf("%-12s %s: %s tets, %s vertices, RMS %.4g (%.3f%% of range), max %.4g (%.2f%%), %.2f s%s\n",
         last ? "output" : "level", file.c_str(), Grouped(m.NumberOfTets()).c_str(),
         Grouped(m.NumberOfVertices()).c_str(), m.Rms, m.Rms * pct, m.Max, m.Max * pct, m.BuildSeconds,
-        m.TargetReached ? "" : " (error bound not reached: nothing left to refine)");
+        m.TargetReached ? ""
+        : m.TargetTets > 0 ? " (tet budget not reached: nothing left to refine)"
+                           : " (error bound not reached: nothing left to refine)");
     }
   }
   const auto& f = meshes.back();

@@ -131,8 +131,12 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     throw Error("set a target tet count or a maximum error");
   }
   // Without a tet budget the error bound alone decides, up to one tet per voxel (beyond that
-  // nothing is reduced any more).
-  const long long cap = Opt.TargetTets > 0 ? Opt.TargetTets : (haveError ? std::max<long long>(nvox, budgets.empty() ? 0 : budgets.back()) : budgets.back());
+  // nothing is reduced any more). A budget is capped at the full-resolution tetrahedrisation
+  // (5 tets per voxel cell): refinement cannot go past it, and the progress is measured to it.
+  const long long cells = (volume.Dims[0] - 1LL) * (volume.Dims[1] - 1) * (volume.Dims[2] - 1);
+  const long long cap = std::min(5 * cells,
+    Opt.TargetTets > 0 ? Opt.TargetTets
+                       : (haveError ? std::max<long long>(nvox, budgets.empty() ? 0 : budgets.back()) : budgets.back()));
   const double errorBound =
     haveError ? Opt.TargetError * (Opt.ErrorRelative ? (volume.Range[1] - volume.Range[0]) : 1.0) : -1.0;
   const bool maxMetric = Opt.ErrorMetric == ReducerOptions::Metric::Max;
@@ -204,6 +208,17 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   };
 
   size_t bi = 0;
+  // The refinement stops short: every budget left and the error bound are emitted as not reached.
+  auto unreached = [&](int level) {
+    for (; bi < budgets.size(); ++bi)
+    {
+      emit(budgets[bi], false, level);
+    }
+    if (haveError && (out.empty() || out.back().NumberOfTets() != mesh.NumberOfTets()))
+    {
+      emit(0, false, level);
+    }
+  };
   std::vector<double> priority;
   for (int level = 0;; ++level)
   {
@@ -252,10 +267,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     }
     if (nt >= cap)
     {
-      if (out.empty() || out.back().NumberOfTets() != nt)
-      {
-        emit(0, false, level);
-      }
+      unreached(level);
       break;
     }
     const long long goal = bi < budgets.size() ? std::min(cap, budgets[bi]) : cap;
@@ -278,14 +290,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     if (cand.empty())
     {
       // Nothing left to refine: the field is matched as well as this resolution allows.
-      for (; bi < budgets.size(); ++bi)
-      {
-        emit(budgets[bi], false, level);
-      }
-      if (haveError && (out.empty() || out.back().NumberOfTets() != nt))
-      {
-        emit(0, false, level);
-      }
+      unreached(level);
       break;
     }
     std::sort(cand.begin(), cand.end(), [&](int a, int b) {

@@ -144,6 +144,33 @@ TEST(TetReducer, ErrorTargetsAreMet)
   ExpectValid(mx.back());
 }
 
+// A budget past the full-resolution tetrahedrisation (5 tets per voxel cell) stops there and says
+// so, for the last level and every level above it, instead of refining past the voxels.
+TEST(TetReducer, BudgetsBeyondTheVoxelsStopAtFullResolution)
+{
+  const int d[3] = { 9, 8, 7 };
+  const double s[3] = { 1, 1, 1 }, o[3] = { 0, 0, 0 };
+  auto img = Field(d, s, o, [](double x, double y, double z) { return std::sin(x) * std::cos(0.7 * y) + z * z; });
+  art::ReducerOptions opt;
+  opt.TargetTets = 1000000;
+  opt.Levels = { 100, 500000 };
+  const auto out = art::TetReducer(opt).Run(art::VolumeFromImage(img));
+  ASSERT_EQ(out.size(), 3u);
+  EXPECT_TRUE(out[0].TargetReached);
+  const long long full = 5LL * 8 * 7 * 6;
+  for (int i = 1; i < 3; ++i)
+  {
+    EXPECT_FALSE(out[i].TargetReached) << i;
+    // The last bisection's closure may overshoot by a few tets; refining on to the edge-length
+    // limit (as before the cap) gave 2176 here.
+    EXPECT_GE(out[i].NumberOfTets(), full) << i;
+    EXPECT_LE(out[i].NumberOfTets(), full + 16) << i;
+    ExpectValid(out[i]);
+  }
+  EXPECT_EQ(out[1].TargetTets, 500000);
+  EXPECT_EQ(out[2].TargetTets, 1000000);
+}
+
 TEST(TetReducer, DeterministicForAnyThreadCount)
 {
   auto vol = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/data/ct-head-128.mha");
