@@ -4,6 +4,7 @@
 #include "ExactIntegrator.h"
 #include "ParallelTiles.h"
 #include "Progress.h"
+#include "ProjectedWalker.h"
 #include "TetWalker.h"
 #include "Accelerator.h"
 #include "TriangleStore.h"
@@ -23,10 +24,12 @@ namespace art
 {
 struct TetRayCaster::Impl
 {
-  // Integrates one ray over every piece of the mesh it passes through, front to back.
-  template <class Rule>
-  static void Trace(const TetRayCaster& rc, const Rule& rule, const TetWalker& w, const Ray& r,
-    int start, const std::vector<Entry>& entries, RayResult& res, Counters& c, std::uint64_t& nudges)
+  // Integrates one ray over every piece of the mesh it passes through, front to back. w tests
+  // faces (the start tet's exit); walker walks (w itself, or a ProjectedWalker for the same ray).
+  template <class Rule, class Walker>
+  static void Trace(const TetRayCaster& rc, const Rule& rule, const TetWalker& w, const Walker& walker,
+    const Ray& r, int start, const std::vector<Entry>& entries, RayResult& res, Counters& c,
+    std::uint64_t& nudges)
   {
     const TetMesh& M = rc.M;
     const RenderSettings& S = rc.S;
@@ -125,7 +128,7 @@ struct TetRayCaster::Impl
         const int link = M.Link(start, f);
         if (visit(start, in, ex) && link >= 0)
         {
-          w.Walk(TetMesh::LinkTet(link), TetMesh::LinkFace(link), ex, visit, out, c.tetsCrossed, nudges);
+          walker.Walk(TetMesh::LinkTet(link), TetMesh::LinkFace(link), ex, visit, out, c.tetsCrossed, nudges);
         }
         tDone = out.t;
       }
@@ -147,7 +150,7 @@ struct TetRayCaster::Impl
       ++res.pieces;
       const auto& bf = M.BoundaryFaces()[e.face];
       FaceCrossing out;
-      w.Walk(bf[0], bf[1], e.x, visit, out, c.tetsCrossed, nudges);
+      walker.Walk(bf[0], bf[1], e.x, visit, out, c.tetsCrossed, nudges);
       tDone = out.t;
     }
     if (mip)
@@ -243,6 +246,11 @@ struct TetRayCaster::Impl
     const bool parallel = cam.IsParallel();
     const int eyeTet = !parallel && rc.M.Bounds().Contains(cam.Position()) ? rc.M.Locate(cam.Position()) : -1;
     std::atomic<std::uint64_t> nudges{ 0 };
+    std::unique_ptr<const ProjectedView> view;
+    if (rc.S.projectedWalk)
+    {
+      view = std::make_unique<const ProjectedView>(rc.M, cam);
+    }
     if (p)
     {
       p->Begin("render", double(cam.Width()) * cam.Height()); // ForEachTile counts pixels
@@ -286,7 +294,14 @@ struct TetRayCaster::Impl
             }
             ++c.hits;
             RayResult res;
-            Trace(rc, rule, w, r, start, entries, res, c, nd);
+            if (view && view->Fits(r))
+            {
+              Trace(rc, rule, w, ProjectedWalker(*view, r), r, start, entries, res, c, nd);
+            }
+            else
+            {
+              Trace(rc, rule, w, w, r, start, entries, res, c, nd);
+            }
             img.Set(x, y, { float(res.rgba[0]), float(res.rgba[1]), float(res.rgba[2]), float(res.rgba[3]) });
           }
         }
@@ -350,11 +365,11 @@ RayResult TetRayCaster::Cast(const Ray& r) const
   const int start = M.Bounds().Contains(r.At(r.tmin)) ? M.Locate(r.At(r.tmin)) : -1;
   if (S.rule == RenderSettings::Rule::Trapezoid)
   {
-    Impl::Trace(*this, TrapezoidRule(S.tf), w, r, start, entries, res, c, nudges);
+    Impl::Trace(*this, TrapezoidRule(S.tf), w, w, r, start, entries, res, c, nudges);
   }
   else
   {
-    Impl::Trace(*this, ExactIntegrator(S.tf), w, r, start, entries, res, c, nudges);
+    Impl::Trace(*this, ExactIntegrator(S.tf), w, w, r, start, entries, res, c, nudges);
   }
   return res;
 }

@@ -1,7 +1,8 @@
 // TetRayCaster: cell-by-cell ray casting of a tetrahedral grid (Grosso, Luerig & Ertl 1997, sec. 5):
-// entry face per ray (EntryFinder), face-to-face traversal (TetWalker), emission-absorption per
-// segment with the exact or the trapezoid rule (ExactIntegrator), iso-surfaces with Phong-shaded
-// interpolated vertex gradients, maximum intensity, early ray termination. Non-convex meshes are
+// entry face per ray (EntryFinder), face-to-face traversal (TetWalker; ProjectedWalker for a
+// camera's rays), emission-absorption per segment with the exact or the trapezoid rule
+// (ExactIntegrator), iso-surfaces with Phong-shaded interpolated vertex gradients, maximum
+// intensity, early ray termination. Non-convex meshes are
 // integrated over every piece the ray passes through. Image tiles run over art::ForEachTile, so
 // the image is identical for any thread count.
 #ifndef art_TetRayCaster_h
@@ -52,6 +53,9 @@ struct RenderSettings
   /// Non-convex meshes: entry faces from the TriangleGrid all-hits query over the boundary
   /// triangles (true) or from testing every face in the pixel's screen bucket (false).
   bool boundaryGrid = true;
+  /// Walk the camera's rays in its projection (ProjectedWalker: 2-D side products) where it is
+  /// valid, or always with the 3-D TetWalker (false).
+  bool projectedWalk = true;
 };
 
 struct RayResult

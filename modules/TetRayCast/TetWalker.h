@@ -23,6 +23,126 @@ struct FaceCrossing
   double t = 0, s = 0;
 };
 
+/// The face-to-face walk shared by TetWalker and ProjectedWalker: Geo supplies the corners, the
+/// side products and the exit crossing (see TetWalker's geometry members), the walk the rest.
+template <class Geo, class Visit>
+void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossing in, Visit&& visit,
+  FaceCrossing& out, std::uint64_t& steps, std::uint64_t& nudges)
+{
+  const std::size_t limit = M.NumberOfTets() + 8;
+  int stuck = 0;
+  // The entry face (a, b, c) in the current tet's outward order, with the side products of its
+  // edges (all <= 0: the ray goes in). Each step adds the apex d: three new products decide
+  // the exit among the faces (c b d), (a c d), (b a d), and that face, reversed, is the next
+  // tet's entry face, so nothing is searched or recomputed.
+  // Four corner slots: a, b, c index the entry face; the fourth takes each new apex, and the
+  // vertex a step leaves behind frees its slot (indices move, corners do not).
+  using Corner = typename Geo::Corner;
+  Corner cs[4];
+  int ia = 0, ib = 1, ic = 2, id = 3;
+  double eab, ebc, eca;
+  {
+    const auto& v = M.Tet(t);
+    const int* fv = TetMesh::FaceVertex[entryFace];
+    cs[0] = g.MakeCorner(v[fv[0]]), cs[1] = g.MakeCorner(v[fv[1]]), cs[2] = g.MakeCorner(v[fv[2]]);
+    eab = g.Side(cs[0], cs[1]), ebc = g.Side(cs[1], cs[2]), eca = g.Side(cs[2], cs[0]);
+  }
+  // A mesh larger than the caches waits on memory at every step: the next tet is one of this
+  // one's neighbours, so their rows are fetched while this step computes (measured 15% faster on
+  // the full-resolution CT; on meshes that fit in cache it only costs).
+  const bool prefetch = M.NumberOfTets() > TetMesh::LocalityThreshold;
+  for (std::size_t n = 0; n < limit; ++n)
+  {
+    ++steps;
+    const auto& v = M.Tet(t);
+    if (prefetch)
+    {
+      for (int l : M.LinkRow(t))
+      {
+        const std::size_t nb = static_cast<std::size_t>(TetMesh::LinkTet(std::max(l, 0)));
+        __builtin_prefetch(&M.Tet(nb));
+        __builtin_prefetch(&M.LinkRow(nb));
+      }
+    }
+    cs[id] = g.MakeCorner(v[entryFace]);
+    const Corner &a = cs[ia], &b = cs[ib], &c = cs[ic], &d = cs[id];
+    const double pa = g.Side(a, d), pb = g.Side(b, d), pc = g.Side(c, d);
+    // Outward edge products of each candidate face (entry edge first); a face's vertices weigh
+    // the products of their opposite edges.
+    const double fA[3] = { -ebc, pb, -pc }; // face opposite a: (c, b, d)
+    const double fB[3] = { -eca, pc, -pa }; // face opposite b: (a, c, d)
+    const double fC[3] = { -eab, pa, -pb }; // face opposite c: (b, a, d)
+    const double* fs[3] = { fA, fB, fC };
+    // The signs of pa, pb, pc name the exit face (A: pb >= 0 >= pc, B: pc >= 0 >= pa,
+    // C: pa >= 0 >= pb). Only a strictly interior crossing is taken on that word; a crossing on
+    // an edge or vertex (a zero product) or a failed test goes to the full rule: a proper exit
+    // beats any fallback, among proper ones the most interior wins, and with none the
+    // least-violating face is taken, its weights clamped into it.
+    static constexpr int byCode[8] = { -1, 1, 0, 1, 2, 2, 0, -1 };
+    int x = byCode[(pa >= 0 ? 4 : 0) | (pb >= 0 ? 2 : 0) | (pc >= 0 ? 1 : 0)];
+    if (x < 0 || !(std::min(fs[x][0], std::min(fs[x][1], fs[x][2])) > 0))
+    {
+      double bestLo = -1e300;
+      bool proper = false;
+      for (int k = 0; k < 3; ++k)
+      {
+        const double* f = fs[k];
+        const double lo = std::min(f[0], std::min(f[1], f[2]));
+        const bool ok = lo >= 0 && f[0] + f[1] + f[2] > 0;
+        if ((ok && !proper) || (ok == proper && lo > bestLo))
+        {
+          proper = ok;
+          bestLo = lo;
+          x = k;
+        }
+      }
+      nudges += proper ? 0 : 1;
+    }
+    // The exit face as (u, w, d): (c b d), (a c d) or (b a d); u <- e[1], w <- e[2], d <- e[0].
+    const Corner& u = x == 0 ? c : (x == 1 ? a : b);
+    const Corner& w = x == 0 ? b : (x == 1 ? c : a);
+    const double* e = fs[x];
+    g.Exit(u, w, d, std::max(e[1], 0.0), std::max(e[2], 0.0), std::max(e[0], 0.0), in.t, out);
+    if (!visit(t, in, out))
+    {
+      return;
+    }
+    stuck = out.t > in.t ? 0 : stuck + 1;
+    // The exit face is opposite the vertex a, b or c: find its slot in this tet.
+    const int opp = x == 0 ? a.id : (x == 1 ? b.id : c.id);
+    const int* fv = TetMesh::FaceVertex[entryFace];
+    const int slot = v[fv[0]] == opp ? fv[0] : (v[fv[1]] == opp ? fv[1] : fv[2]);
+    const int link = M.Link(t, slot);
+    if (link < 0 || stuck > 256)
+    {
+      return;
+    }
+    // The exit face reversed is the next tet's entry face, outward for that tet.
+    if (x == 0)
+    {
+      const double nab = pc, nbc = -pb, nca = ebc; // (c, d, b)
+      const int freed = ia;
+      ia = ic, ic = ib, ib = id, id = freed;
+      eab = nab, ebc = nbc, eca = nca;
+    }
+    else if (x == 1)
+    {
+      const double nab = pa, nbc = -pc, nca = eca; // (a, d, c)
+      std::swap(ib, id);
+      eab = nab, ebc = nbc, eca = nca;
+    }
+    else
+    {
+      const double nbc = pb, nca = -pa; // (a, b, d)
+      std::swap(ic, id);
+      ebc = nbc, eca = nca;
+    }
+    t = TetMesh::LinkTet(link);
+    entryFace = TetMesh::LinkFace(link);
+    in = out;
+  }
+}
+
 class TetWalker
 {
 public:
@@ -74,132 +194,11 @@ public:
   void Walk(int t, int entryFace, FaceCrossing in, Visit&& visit, FaceCrossing& out,
     std::uint64_t& steps, std::uint64_t& nudges) const
   {
-    const std::size_t limit = M.NumberOfTets() + 8;
-    int stuck = 0;
-    // The entry face (a, b, c) in the current tet's outward order, with the side products of its
-    // edges (all <= 0: the ray goes in). Each step adds the apex d: three new products decide
-    // the exit among the faces (c b d), (a c d), (b a d), and that face, reversed, is the next
-    // tet's entry face, so nothing is searched or recomputed.
-    // Four corner slots: a, b, c index the entry face; the fourth takes each new apex, and the
-    // vertex a step leaves behind frees its slot (indices move, corners do not).
-    Corner cs[4];
-    int ia = 0, ib = 1, ic = 2, id = 3;
-    double eab, ebc, eca;
-    {
-      const auto& v = M.Tet(t);
-      const int* fv = TetMesh::FaceVertex[entryFace];
-      cs[0] = MakeCorner(v[fv[0]]), cs[1] = MakeCorner(v[fv[1]]), cs[2] = MakeCorner(v[fv[2]]);
-      eab = Side(cs[0], cs[1]), ebc = Side(cs[1], cs[2]), eca = Side(cs[2], cs[0]);
-    }
-    // A mesh larger than the caches waits on memory at every step: the next tet is one of this
-    // one's neighbours, so their rows are fetched while this step computes (measured 15% faster on
-    // the full-resolution CT; on meshes that fit in cache it only costs).
-    const bool prefetch = M.NumberOfTets() > TetMesh::LocalityThreshold;
-    for (std::size_t n = 0; n < limit; ++n)
-    {
-      ++steps;
-      const auto& v = M.Tet(t);
-      if (prefetch)
-      {
-        for (int l : M.LinkRow(t))
-        {
-          const std::size_t nb = static_cast<std::size_t>(TetMesh::LinkTet(std::max(l, 0)));
-          __builtin_prefetch(&M.Tet(nb));
-          __builtin_prefetch(&M.LinkRow(nb));
-        }
-      }
-      cs[id] = MakeCorner(v[entryFace]);
-      const Corner &a = cs[ia], &b = cs[ib], &c = cs[ic], &d = cs[id];
-      const double pa = Side(a, d), pb = Side(b, d), pc = Side(c, d);
-      // Outward edge products of each candidate face (entry edge first); a face's vertices weigh
-      // the products of their opposite edges.
-      const double fA[3] = { -ebc, pb, -pc }; // face opposite a: (c, b, d)
-      const double fB[3] = { -eca, pc, -pa }; // face opposite b: (a, c, d)
-      const double fC[3] = { -eab, pa, -pb }; // face opposite c: (b, a, d)
-      const double* fs[3] = { fA, fB, fC };
-      // The signs of pa, pb, pc name the exit face (A: pb >= 0 >= pc, B: pc >= 0 >= pa,
-      // C: pa >= 0 >= pb). Only a strictly interior crossing is taken on that word; a crossing on
-      // an edge or vertex (a zero product) or a failed test goes to the full rule: a proper exit
-      // beats any fallback, among proper ones the most interior wins, and with none the
-      // least-violating face is taken, its weights clamped into it.
-      static constexpr int byCode[8] = { -1, 1, 0, 1, 2, 2, 0, -1 };
-      int x = byCode[(pa >= 0 ? 4 : 0) | (pb >= 0 ? 2 : 0) | (pc >= 0 ? 1 : 0)];
-      if (x < 0 || !(std::min(fs[x][0], std::min(fs[x][1], fs[x][2])) > 0))
-      {
-        double bestLo = -1e300;
-        bool proper = false;
-        for (int k = 0; k < 3; ++k)
-        {
-          const double* f = fs[k];
-          const double lo = std::min(f[0], std::min(f[1], f[2]));
-          const bool ok = lo >= 0 && f[0] + f[1] + f[2] > 0;
-          if ((ok && !proper) || (ok == proper && lo > bestLo))
-          {
-            proper = ok;
-            bestLo = lo;
-            x = k;
-          }
-        }
-        nudges += proper ? 0 : 1;
-      }
-      // The exit face as (u, w, d): (c b d), (a c d) or (b a d); u <- e[1], w <- e[2], d <- e[0].
-      const Corner& u = x == 0 ? c : (x == 1 ? a : b);
-      const Corner& w = x == 0 ? b : (x == 1 ? c : a);
-      const double* e = fs[x];
-      double wu = std::max(e[1], 0.0), ww = std::max(e[2], 0.0), wd = std::max(e[0], 0.0);
-      const double sum = wu + ww + wd;
-      if (sum > 0)
-      {
-        const double inv = 1.0 / sum;
-        wu *= inv, ww *= inv, wd *= inv;
-      }
-      else
-      {
-        wu = ww = wd = 1.0 / 3;
-      }
-      out.t = std::max(u.t * wu + w.t * ww + d.t * wd, in.t);
-      out.s = u.f * wu + w.f * ww + d.f * wd;
-      if (!visit(t, in, out))
-      {
-        return;
-      }
-      stuck = out.t > in.t ? 0 : stuck + 1;
-      // The exit face is opposite the vertex a, b or c: find its slot in this tet.
-      const int opp = x == 0 ? a.id : (x == 1 ? b.id : c.id);
-      const int* fv = TetMesh::FaceVertex[entryFace];
-      const int slot = v[fv[0]] == opp ? fv[0] : (v[fv[1]] == opp ? fv[1] : fv[2]);
-      const int link = M.Link(t, slot);
-      if (link < 0 || stuck > 256)
-      {
-        return;
-      }
-      // The exit face reversed is the next tet's entry face, outward for that tet.
-      if (x == 0)
-      {
-        const double nab = pc, nbc = -pb, nca = ebc; // (c, d, b)
-        const int freed = ia;
-        ia = ic, ic = ib, ib = id, id = freed;
-        eab = nab, ebc = nbc, eca = nca;
-      }
-      else if (x == 1)
-      {
-        const double nab = pa, nbc = -pc, nca = eca; // (a, d, c)
-        std::swap(ib, id);
-        eab = nab, ebc = nbc, eca = nca;
-      }
-      else
-      {
-        const double nbc = pb, nca = -pa; // (a, b, d)
-        std::swap(ic, id);
-        ebc = nbc, eca = nca;
-      }
-      t = TetMesh::LinkTet(link);
-      entryFace = TetMesh::LinkFace(link);
-      in = out;
-    }
+    WalkFaces(M, *this, t, entryFace, in, visit, out, steps, nudges);
   }
 
-private:
+  // The walk's geometry (WalkFaces): what the walk keeps of a vertex, the side product of two of
+  // them, and the exit crossing from the clamped edge products of the exit face.
   /// A vertex as the walk sees it: global id, scalar, ray parameter, q = p - o and D x q.
   struct Corner
   {
@@ -217,7 +216,25 @@ private:
   {
     return u.id < v.id ? Dot(u.dq, v.q) : -Dot(v.dq, u.q);
   }
+  /// The crossing of face (u, w, d) weighted wu, ww, wd (>= 0, not normalised), not before tIn.
+  static void Exit(const Corner& u, const Corner& w, const Corner& d, double wu, double ww, double wd,
+    double tIn, FaceCrossing& out)
+  {
+    const double sum = wu + ww + wd;
+    if (sum > 0)
+    {
+      const double inv = 1.0 / sum;
+      wu *= inv, ww *= inv, wd *= inv;
+    }
+    else
+    {
+      wu = ww = wd = 1.0 / 3;
+    }
+    out.t = std::max(u.t * wu + w.t * ww + d.t * wd, tIn);
+    out.s = u.f * wu + w.f * ww + d.f * wd;
+  }
 
+private:
   const TetMesh& M;
   const Vec3* P;
   const double* F;
