@@ -59,7 +59,12 @@ int RunCommand(const Command& cmd, const std::vector<std::string>& args)
     vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   }
-  art::SetThreadCount(static_cast<int>(opts.GetInt("threads")));
+  const long long threads = opts.GetInt("threads");
+  if (threads < 0 || threads > 4096)
+  {
+    throw UsageError("--threads expects 0 (all cores) or a count up to 4096, got '" + opts.Get("threads") + "'");
+  }
+  art::SetThreadCount(static_cast<int>(threads));
   return cmd.run(opts);
 }
 } // namespace cli

@@ -7,6 +7,7 @@
 
 #include <vtkCamera.h>
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -40,13 +41,23 @@ View ViewFromOptions(const Options& o)
   return v;
 }
 
+static double Zoom(const Options& o)
+{
+  const double zoom = o.GetDouble("zoom");
+  if (!(zoom > 0 && std::isfinite(zoom)))
+  {
+    throw UsageError("--zoom expects a positive factor, got '" + o.Get("zoom") + "'");
+  }
+  return zoom;
+}
+
 void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam)
 {
   cam->SetPosition(0, -1, 0);
   cam->SetFocalPoint(0, 0, 0);
   cam->SetViewUp(0, 0, 1);
   cam->SetParallelProjection(o.Flag("parallel"));
-  art::Camera::Frame(cam, bounds, o.GetDouble("azimuth"), o.GetDouble("elevation"), o.GetDouble("zoom"));
+  art::Camera::Frame(cam, bounds, o.GetDouble("azimuth"), o.GetDouble("elevation"), Zoom(o));
 }
 } // namespace cli
 
@@ -77,6 +88,7 @@ int Run(const cli::Options& o)
     throw cli::UsageError("needs exactly one INPUT");
   }
   const std::string input = o.Positional()[0];
+  cli::Zoom(o); // a usage error before any loading
   const art::DataKind kind = art::KindOf(input);
   for (const auto& r : cli::Renderers())
   {

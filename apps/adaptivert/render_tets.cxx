@@ -75,9 +75,9 @@ art::RenderSettings MakeSettings(const cli::Options& o, art::TransferFunction tf
   art::RenderSettings s;
   s.tf = std::move(tf);
   s.earlyTermination = o.GetDouble("ert");
-  if (!(s.earlyTermination > 0))
+  if (!(s.earlyTermination > 0 && s.earlyTermination <= 1))
   {
-    throw cli::UsageError("--ert expects an opacity in (0, 1]");
+    throw cli::UsageError("--ert expects an opacity in (0, 1], got '" + o.Get("ert") + "'");
   }
   const std::string rule = o.Get("integrator");
   if (rule == "trapezoid")
