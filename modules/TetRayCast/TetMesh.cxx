@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cmath>
+#include <numeric>
 #include <tuple>
 
 namespace art
@@ -424,6 +425,66 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
   return TetMesh(std::move(pts), std::move(val), std::move(tets));
 }
 
+namespace
+{
+// Points equal in position and scalar become one (exported meshes often give every cell its own
+// points). Without shared faces each tet would be a piece of its own, found through the boundary
+// grid at every step; points that differ in the scalar (a field discontinuous across a face) stay
+// apart. Returns how many points went.
+std::size_t MergeDuplicatePoints(std::vector<Vec3>& pts, std::vector<double>& val, std::vector<std::array<int, 4>>& tets)
+{
+  const std::size_t np = pts.size();
+  for (std::size_t i = 0; i < np; ++i)
+  {
+    if (!IsFinite(pts[i]) || !std::isfinite(val[i]))
+    {
+      return 0; // no order to sort by; the constructor names the point
+    }
+  }
+  std::vector<int> order(np);
+  std::iota(order.begin(), order.end(), 0);
+  auto key = [&](int i) { return std::make_tuple(pts[i].x, pts[i].y, pts[i].z, val[i]); };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) != key(b) ? key(a) < key(b) : a < b; });
+  std::vector<int> to(np);
+  std::size_t merged = 0;
+  for (std::size_t k = 0; k < np; ++k)
+  {
+    const bool same = k > 0 && key(order[k]) == key(order[k - 1]);
+    to[order[k]] = same ? to[order[k - 1]] : order[k];
+    merged += same ? 1 : 0;
+  }
+  if (merged == 0)
+  {
+    return 0;
+  }
+  // Keep the first of each group, in input order.
+  std::vector<int> index(np, -1);
+  std::vector<Vec3> p2;
+  std::vector<double> v2;
+  p2.reserve(np - merged);
+  v2.reserve(np - merged);
+  for (std::size_t i = 0; i < np; ++i)
+  {
+    if (to[i] == static_cast<int>(i))
+    {
+      index[i] = static_cast<int>(p2.size());
+      p2.push_back(pts[i]);
+      v2.push_back(val[i]);
+    }
+  }
+  for (auto& t : tets)
+  {
+    for (int& id : t)
+    {
+      id = id >= 0 && id < static_cast<int>(np) ? index[to[id]] : id; // bad ids stay for the check
+    }
+  }
+  pts = std::move(p2);
+  val = std::move(v2);
+  return merged;
+}
+} // namespace
+
 TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, std::string* note, const std::string& file)
 {
   if (!grid || grid->GetNumberOfCells() == 0)
@@ -526,6 +587,12 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     ug->GetCellPoints(c, n, ids);
     tets.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]),
       static_cast<int>(ids[3]) });
+  }
+  const std::size_t merged = MergeDuplicatePoints(pts, val, tets);
+  if (merged > 0 && note)
+  {
+    *note += std::string(note->empty() ? "" : "; ") + std::to_string(merged) +
+      " duplicate points (same position and scalar) were merged, so their tets share faces";
   }
   try
   {

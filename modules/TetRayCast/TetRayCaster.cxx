@@ -143,9 +143,12 @@ struct TetRayCaster::Impl
       {
         break;
       }
-      if (e.x.t < tDone)
+      // An entry before the last piece's exit lies inside that piece (a duplicate at an edge).
+      // One at the exit itself is the next piece behind a coincident face (whose t, from other
+      // vertex ids, may differ in the last bits), so the test leaves it a margin.
+      if (e.x.t < tDone - 1e-9 * std::max(1.0, std::fabs(tDone)))
       {
-        continue; // inside a piece already integrated (a duplicate at an edge)
+        continue;
       }
       ++res.pieces;
       const auto& bf = M.BoundaryFaces()[e.face];
@@ -176,62 +179,21 @@ struct TetRayCaster::Impl
       f.Find(w, r, px, py, !convex, out, hint, c);
       return;
     }
-    // Non-convex: every boundary surface along the ray from the TriangleGrid, sorted by t. Where
-    // the grid reports a surface once for a ray through a shared edge or vertex, the face it
-    // names may miss the exact Pluecker test by round-off: then its neighbours are tried.
-    thread_local std::vector<Hit> hits;
-    hits.clear();
-    Ray rr = r;
-    rc.Boundary->All(rr, hits, c);
+    // Non-convex: every boundary face in the TriangleGrid's voxels along the ray gets the exact
+    // Pluecker test, sorted by t. Not the grid's own all-hits query: that merges hits at one t
+    // into one surface, so of two coincident faces (the exit of one piece and the entry of the
+    // next, as in a mesh whose tets keep their own points) only one would be tried.
+    thread_local std::vector<long long> cand;
+    rc.Boundary->Candidates(r, cand, c);
     out.clear();
     const auto& bfs = rc.M.BoundaryFaces();
-    auto test = [&](long long b) {
-      const auto& bf = bfs[b];
+    for (long long b : cand)
+    {
       Entry e;
-      if (w.Crosses(bf[0], bf[1], -1, e.x) && e.x.t >= r.tmin)
+      if (w.Crosses(bfs[b][0], bfs[b][1], -1, e.x) && e.x.t >= r.tmin)
       {
-        for (const Entry& o : out)
-        {
-          if (o.face == b)
-          {
-            return true;
-          }
-        }
         e.face = static_cast<int>(b);
         out.push_back(e);
-        return true;
-      }
-      return false;
-    };
-    for (const Hit& h : hits)
-    {
-      if (test(h.triangle))
-      {
-        continue;
-      }
-      // Two rings of edge neighbours cover the faces around a vertex of ordinary valence.
-      int ring[3 + 9];
-      int n = 0;
-      for (int a : rc.M.BoundaryAdjacency(h.triangle))
-      {
-        if (a >= 0)
-        {
-          ring[n++] = a;
-        }
-      }
-      const int first = n;
-      for (int i = 0; i < first; ++i)
-      {
-        for (int a : rc.M.BoundaryAdjacency(ring[i]))
-        {
-          if (a >= 0 && a != h.triangle)
-          {
-            ring[n++] = a;
-          }
-        }
-      }
-      for (int i = 0; i < n && !test(ring[i]); ++i)
-      {
       }
     }
     std::stable_sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) { return a.x.t < b.x.t; });

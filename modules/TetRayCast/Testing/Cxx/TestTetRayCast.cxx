@@ -319,6 +319,57 @@ TEST(TetMesh, FromVTKAndBadMeshes)
   EXPECT_NE(note.find("tetrahedralised"), std::string::npos);
 }
 
+// A mesh whose tets each keep their own points (as exported meshes often do) is merged back into
+// one with shared faces, with a note: the same tets and boundary, and the same image as the shared
+// mesh. Points equal in position but not in scalar (a discontinuous field) are kept apart.
+TEST(TetMesh, DuplicatePointsAreMerged)
+{
+  const TetMesh shared = fixtures::GridMesh(3, 2, 2, { 0, 0, 0 }, { 1, 1, 1 }, Linear, 5);
+  vtkNew<vtkUnstructuredGrid> ug;
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkDoubleArray> f;
+  f->SetName("f");
+  for (std::size_t t = 0; t < shared.NumberOfTets(); ++t)
+  {
+    vtkIdType ids[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      const Vec3& p = shared.PointsArray()[shared.Tet(t)[k]];
+      ids[k] = pts->InsertNextPoint(p.x, p.y, p.z);
+      f->InsertNextValue(shared.Scalars()[shared.Tet(t)[k]]);
+    }
+    ug->InsertNextCell(VTK_TETRA, 4, ids);
+  }
+  ug->SetPoints(pts);
+  ug->GetPointData()->SetScalars(f);
+  std::string note;
+  const TetMesh m = TetMesh::FromVTK(ug, {}, &note);
+  EXPECT_NE(note.find(std::to_string(4 * shared.NumberOfTets() - shared.PointsArray().size()) + " duplicate points"),
+    std::string::npos) << note;
+  EXPECT_EQ(m.PointsArray().size(), shared.PointsArray().size());
+  EXPECT_EQ(m.BoundaryFaces().size(), shared.BoundaryFaces().size());
+  EXPECT_TRUE(m.IsConvex());
+  RenderSettings s;
+  s.tf = LinearTF(shared.ScalarRange(0), shared.ScalarRange(1));
+  const Camera cam = ViewOf(shared.Bounds(), 24, 20, 35, 25);
+  Image a, b;
+  TetRayCaster(shared, s).Render(cam, a);
+  TetRayCaster(m, s).Render(cam, b);
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 24; ++x)
+      ASSERT_NEAR(a.Pixel(x, y)[3], b.Pixel(x, y)[3], 1e-12) << x << "," << y;
+  // A jump in the field across every face: nothing merges.
+  for (vtkIdType i = 0; i < f->GetNumberOfTuples(); ++i)
+  {
+    f->SetValue(i, f->GetValue(i) + 0.01 * (i / 4)); // a different offset in every tet
+  }
+  f->Modified();
+  note.clear();
+  const TetMesh apart = TetMesh::FromVTK(ug, {}, &note);
+  EXPECT_EQ(note.find("duplicate"), std::string::npos) << note;
+  EXPECT_EQ(apart.BoundaryFaces().size(), 4 * apart.NumberOfTets());
+}
+
 // A volume whose direction matrix turns it 90 degrees about z renders exactly like the same voxels
 // stored already turned (axes swapped, one reversed) with the identity direction: through the
 // full-resolution tets and through the voxel reference alike.

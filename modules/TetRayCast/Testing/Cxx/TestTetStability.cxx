@@ -168,4 +168,48 @@ TEST_P(NonConvex, RaysEnterTwice)
     }
 }
 
+// Every tet with its own four points and a field that jumps between tets: no face is shared, so
+// each tet is a piece of its own that the ray enters through a face coincident with the previous
+// piece's exit. The grid's all-hits query merges such coincident hits into one surface; entries
+// must still find every piece.
+TEST_P(NonConvex, TetsWithTheirOwnPoints)
+{
+  RenderSettings settings = Settings();
+  settings.boundaryGrid = GetParam();
+  const TetMesh g = fixtures::GridMesh(3, 3, 2, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Wavy, 5);
+  std::vector<Vec3> pts;
+  std::vector<double> val;
+  std::vector<std::array<int, 4>> tets;
+  for (std::size_t t = 0; t < g.NumberOfTets(); ++t)
+  {
+    std::array<int, 4> ids;
+    for (int k = 0; k < 4; ++k)
+    {
+      ids[k] = static_cast<int>(pts.size());
+      pts.push_back(g.PointsArray()[g.Tet(t)[k]]);
+      val.push_back(g.Scalars()[g.Tet(t)[k]] + 0.15 * (t % 3));
+    }
+    tets.push_back(ids);
+  }
+  const TetMesh m(std::move(pts), std::move(val), std::move(tets));
+  EXPECT_EQ(m.BoundaryFaces().size(), 4 * m.NumberOfTets());
+  const TetRayCaster rc(m, settings);
+  vtkNew<vtkCamera> cam;
+  cam->SetPosition(-1.1, -2.7, 2.3);
+  cam->SetFocalPoint(0.8, 0.7, 0.4);
+  const Camera c = Camera::FromVTK(cam, 32, 24);
+  Image img;
+  rc.Render(c, img);
+  int crossed = 0;
+  for (int y = 0; y < 24; ++y)
+    for (int x = 0; x < 32; ++x)
+    {
+      const RayAccum ref = fixtures::BruteForce(m, rc.Settings().tf, c.Generate(x, y));
+      crossed += ref.Alpha() > 0.05 ? 1 : 0;
+      ASSERT_NEAR(img.Pixel(x, y)[3], ref.Alpha(), 1e-6) << x << "," << y;
+      ASSERT_NEAR(img.Pixel(x, y)[1], ref.rgb[1], 1e-6) << x << "," << y;
+    }
+  EXPECT_GT(crossed, 200);
+}
+
 INSTANTIATE_TEST_SUITE_P(TetStability, NonConvex, ::testing::Values(true, false));
