@@ -116,12 +116,14 @@ public:
     const ProjectedView::Vertex& p = V[id];
     return { id, p.x - Px, p.y - Py, p.m, p.n };
   }
-  /// orient2d of the edge u -> v about the pixel, positive factors (Dz zu zv) dropped. Computed
-  /// in global id order, so a face shared by two tets gets the same bits from both; within the
-  /// rounding bound, the 3-D product (so the same bits again).
+  /// orient2d of the edge u -> v about the pixel, positive factors (Dz zu zv) dropped. Unlike the
+  /// 3-D product it needs no global id order for a face shared by two tets to get the same bits
+  /// from both: products commute and rounding is symmetric, so v -> u gives exactly the negated
+  /// value (up to the sign of a zero, which no test looks at). Within the rounding bound, the 3-D
+  /// product in id order.
   double Side(const Corner& u, const Corner& v) const
   {
-    const double s = u.id < v.id ? u.x * v.y - u.y * v.x : -(v.x * u.y - v.y * u.x);
+    const double s = u.x * v.y - u.y * v.x;
     if (__builtin_expect(std::fabs(s) <= Eps, 0))
     {
       return Exact(u, v);

@@ -68,11 +68,12 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
     const Corner &a = cs[ia], &b = cs[ib], &c = cs[ic], &d = cs[id];
     const double pa = g.Side(a, d), pb = g.Side(b, d), pc = g.Side(c, d);
     // Outward edge products of each candidate face (entry edge first); a face's vertices weigh
-    // the products of their opposite edges.
-    const double fA[3] = { -ebc, pb, -pc }; // face opposite a: (c, b, d)
-    const double fB[3] = { -eca, pc, -pa }; // face opposite b: (a, c, d)
-    const double fC[3] = { -eab, pa, -pb }; // face opposite c: (b, a, d)
-    const double* fs[3] = { fA, fB, fC };
+    // the products of their opposite edges. Face A, opposite a: (c, b, d); B: (a, c, d); C: (b, a, d).
+    auto face = [&](int k, double* f) {
+      f[0] = k == 0 ? -ebc : (k == 1 ? -eca : -eab);
+      f[1] = k == 0 ? pb : (k == 1 ? pc : pa);
+      f[2] = k == 0 ? -pc : (k == 1 ? -pa : -pb);
+    };
     // The signs of pa, pb, pc name the exit face (A: pb >= 0 >= pc, B: pc >= 0 >= pa,
     // C: pa >= 0 >= pb). Only a strictly interior crossing is taken on that word; a crossing on
     // an edge or vertex (a zero product) or a failed test goes to the full rule: a proper exit
@@ -80,13 +81,19 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
     // least-violating face is taken, its weights clamped into it.
     static constexpr int byCode[8] = { -1, 1, 0, 1, 2, 2, 0, -1 };
     int x = byCode[(pa >= 0 ? 4 : 0) | (pb >= 0 ? 2 : 0) | (pc >= 0 ? 1 : 0)];
-    if (x < 0 || !(std::min(fs[x][0], std::min(fs[x][1], fs[x][2])) > 0))
+    double e[3] = { 0, 0, 0 };
+    if (x >= 0)
+    {
+      face(x, e);
+    }
+    if (x < 0 || !(std::min(e[0], std::min(e[1], e[2])) > 0))
     {
       double bestLo = -1e300;
       bool proper = false;
       for (int k = 0; k < 3; ++k)
       {
-        const double* f = fs[k];
+        double f[3];
+        face(k, f);
         const double lo = std::min(f[0], std::min(f[1], f[2]));
         const bool ok = lo >= 0 && f[0] + f[1] + f[2] > 0;
         if ((ok && !proper) || (ok == proper && lo > bestLo))
@@ -97,11 +104,11 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
         }
       }
       nudges += proper ? 0 : 1;
+      face(x, e);
     }
     // The exit face as (u, w, d): (c b d), (a c d) or (b a d); u <- e[1], w <- e[2], d <- e[0].
     const Corner& u = x == 0 ? c : (x == 1 ? a : b);
     const Corner& w = x == 0 ? b : (x == 1 ? c : a);
-    const double* e = fs[x];
     g.Exit(u, w, d, std::max(e[1], 0.0), std::max(e[2], 0.0), std::max(e[0], 0.0), in.t, out);
     if (!visit(t, in, out))
     {
