@@ -13,6 +13,7 @@
 #include "TetMesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace art
@@ -35,11 +36,11 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
   // edges (all <= 0: the ray goes in). Each step adds the apex d: three new products decide
   // the exit among the faces (c b d), (a c d), (b a d), and that face, reversed, is the next
   // tet's entry face, so nothing is searched or recomputed.
-  // Four corner slots: a, b, c index the entry face; the fourth takes each new apex, and the
-  // vertex a step leaves behind frees its slot (indices move, corners do not).
+  // Four corner slots: a, b, c point at the entry face's; the fourth takes each new apex, and the
+  // vertex a step leaves behind frees its slot (pointers move, corners do not).
   using Corner = typename Geo::Corner;
   Corner cs[4];
-  int ia = 0, ib = 1, ic = 2, id = 3;
+  Corner *ia = &cs[0], *ib = &cs[1], *ic = &cs[2], *id = &cs[3];
   double eab, ebc, eca;
   {
     const auto& v = M.Tet(t);
@@ -64,36 +65,33 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
         __builtin_prefetch(&M.LinkRow(nb));
       }
     }
-    cs[id] = g.MakeCorner(v[entryFace]);
-    const Corner &a = cs[ia], &b = cs[ib], &c = cs[ic], &d = cs[id];
+    *id = g.MakeCorner(v[entryFace]);
+    const Corner &a = *ia, &b = *ib, &c = *ic, &d = *id;
     const double pa = g.Side(a, d), pb = g.Side(b, d), pc = g.Side(c, d);
     // Outward edge products of each candidate face (entry edge first); a face's vertices weigh
-    // the products of their opposite edges. Face A, opposite a: (c, b, d); B: (a, c, d); C: (b, a, d).
-    auto face = [&](int k, double* f) {
-      f[0] = k == 0 ? -ebc : (k == 1 ? -eca : -eab);
-      f[1] = k == 0 ? pb : (k == 1 ? pc : pa);
-      f[2] = k == 0 ? -pc : (k == 1 ? -pa : -pb);
-    };
+    // the products of their opposite edges. Face A, opposite a: (c, b, d) with (-ebc, pb, -pc);
+    // B: (a, c, d) with (-eca, pc, -pa); C: (b, a, d) with (-eab, pa, -pb). The exit face is
+    // data, not a branch (it is as good as random): everything that depends on it is looked up
+    // in these tables by its index, so the step has no mispredicted jumps.
+    const double vals[13] = { eab, ebc, eca, -eab, -ebc, -eca, pa, pb, pc, -pa, -pb, -pc, 0.0 };
+    static constexpr signed char faceOf[4][3] = { { 4, 7, 11 }, { 5, 8, 9 }, { 3, 6, 10 }, { 12, 12, 12 } };
     // The signs of pa, pb, pc name the exit face (A: pb >= 0 >= pc, B: pc >= 0 >= pa,
-    // C: pa >= 0 >= pb). Only a strictly interior crossing is taken on that word; a crossing on
-    // an edge or vertex (a zero product) or a failed test goes to the full rule: a proper exit
-    // beats any fallback, among proper ones the most interior wins, and with none the
-    // least-violating face is taken, its weights clamped into it.
-    static constexpr int byCode[8] = { -1, 1, 0, 1, 2, 2, 0, -1 };
-    int x = byCode[(pa >= 0 ? 4 : 0) | (pb >= 0 ? 2 : 0) | (pc >= 0 ? 1 : 0)];
-    double e[3] = { 0, 0, 0 };
-    if (x >= 0)
-    {
-      face(x, e);
-    }
-    if (x < 0 || !(std::min(e[0], std::min(e[1], e[2])) > 0))
+    // C: pa >= 0 >= pb; 3: none). Only a strictly interior crossing is taken on that word; a
+    // crossing on an edge or vertex (a zero product) or a failed test goes to the full rule: a
+    // proper exit beats any fallback, among proper ones the most interior wins, and with none
+    // the least-violating face is taken, its weights clamped into it.
+    // The word is read from the sign bits: a -0 then counts as negative, but a zero product
+    // fails the strict test below whichever face the word names, or does not enter its face.
+    static constexpr int byCode[8] = { 3, 1, 0, 1, 2, 2, 0, 3 };
+    int x = byCode[7 ^ (std::signbit(pa) << 2 | std::signbit(pb) << 1 | std::signbit(pc))];
+    double e[3] = { vals[faceOf[x][0]], vals[faceOf[x][1]], vals[faceOf[x][2]] };
+    if (!(std::min(e[0], std::min(e[1], e[2])) > 0))
     {
       double bestLo = -1e300;
       bool proper = false;
       for (int k = 0; k < 3; ++k)
       {
-        double f[3];
-        face(k, f);
+        const double f[3] = { vals[faceOf[k][0]], vals[faceOf[k][1]], vals[faceOf[k][2]] };
         const double lo = std::min(f[0], std::min(f[1], f[2]));
         const bool ok = lo >= 0 && f[0] + f[1] + f[2] > 0;
         if ((ok && !proper) || (ok == proper && lo > bestLo))
@@ -104,11 +102,13 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
         }
       }
       nudges += proper ? 0 : 1;
-      face(x, e);
+      e[0] = vals[faceOf[x][0]], e[1] = vals[faceOf[x][1]], e[2] = vals[faceOf[x][2]];
     }
     // The exit face as (u, w, d): (c b d), (a c d) or (b a d); u <- e[1], w <- e[2], d <- e[0].
-    const Corner& u = x == 0 ? c : (x == 1 ? a : b);
-    const Corner& w = x == 0 ? b : (x == 1 ? c : a);
+    Corner* const cp[4] = { ia, ib, ic, id };
+    static constexpr signed char uOf[3] = { 2, 0, 1 }, wOf[3] = { 1, 2, 0 };
+    const Corner& u = *cp[uOf[x]];
+    const Corner& w = *cp[wOf[x]];
     g.Exit(u, w, d, std::max(e[1], 0.0), std::max(e[2], 0.0), std::max(e[0], 0.0), in.t, out);
     if (!visit(t, in, out))
     {
@@ -116,34 +116,23 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
     }
     stuck = out.t > in.t ? 0 : stuck + 1;
     // The exit face is opposite the vertex a, b or c: find its slot in this tet.
-    const int opp = x == 0 ? a.id : (x == 1 ? b.id : c.id);
+    const int opp = cp[x]->id;
     const int* fv = TetMesh::FaceVertex[entryFace];
-    const int slot = v[fv[0]] == opp ? fv[0] : (v[fv[1]] == opp ? fv[1] : fv[2]);
+    // In masks, not jumps: which of the three it is is as random as the exit face.
+    const int m0 = -int(v[fv[0]] == opp), m1 = -int(v[fv[1]] == opp) & ~m0;
+    const int slot = (fv[0] & m0) | (fv[1] & m1) | (fv[2] & ~(m0 | m1));
     const int link = M.Link(t, slot);
     if (link < 0 || stuck > 256)
     {
       return;
     }
-    // The exit face reversed is the next tet's entry face, outward for that tet.
-    if (x == 0)
-    {
-      const double nab = pc, nbc = -pb, nca = ebc; // (c, d, b)
-      const int freed = ia;
-      ia = ic, ic = ib, ib = id, id = freed;
-      eab = nab, ebc = nbc, eca = nca;
-    }
-    else if (x == 1)
-    {
-      const double nab = pa, nbc = -pc, nca = eca; // (a, d, c)
-      std::swap(ib, id);
-      eab = nab, ebc = nbc, eca = nca;
-    }
-    else
-    {
-      const double nbc = pb, nca = -pa; // (a, b, d)
-      std::swap(ic, id);
-      ebc = nbc, eca = nca;
-    }
+    // The exit face reversed is the next tet's entry face, outward for that tet: (c, d, b) with
+    // products (pc, -pb, ebc), (a, d, c) with (pa, -pc, eca), or (a, b, d) with (eab, pb, -pa);
+    // the corner left behind frees its slot for the next apex.
+    static constexpr signed char nextE[3][3] = { { 8, 10, 1 }, { 6, 11, 2 }, { 0, 7, 9 } };
+    static constexpr signed char nextC[3][4] = { { 2, 3, 1, 0 }, { 0, 3, 2, 1 }, { 0, 1, 3, 2 } };
+    eab = vals[nextE[x][0]], ebc = vals[nextE[x][1]], eca = vals[nextE[x][2]];
+    ia = cp[nextC[x][0]], ib = cp[nextC[x][1]], ic = cp[nextC[x][2]], id = cp[nextC[x][3]];
     t = TetMesh::LinkTet(link);
     entryFace = TetMesh::LinkFace(link);
     in = out;
