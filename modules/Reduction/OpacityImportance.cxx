@@ -117,6 +117,15 @@ void OpacityImportance::Prepare(const VoxelVolume& vol, double floor, int radius
   {
     Fl = 1.0; // constant opacity: every voxel matters alike
   }
+  // The weight of a voxel whose fit stays inside its neighbourhood's range, as most do: the
+  // reduction asks for it at every voxel of every level.
+  W0.resize(Lo.size());
+  ForEachRange(static_cast<long long>(W0.size()), 4096, [&](long long i0, long long i1, Counters&) {
+    for (long long i = i0; i < i1; ++i)
+    {
+      W0[i] = Scaled(MaxSlope(Lo[i], Hi[i]));
+    }
+  });
 }
 
 } // namespace art

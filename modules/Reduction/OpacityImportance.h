@@ -42,6 +42,10 @@ public:
   /// fit that strays into an opacity ramp (a ghost shell in empty space) weighs as much as the ramp.
   double Weight(long long i, double f, double fit) const
   {
+    if (fit >= Lo[i] && fit <= Hi[i] && f >= Lo[i] && f <= Hi[i])
+    {
+      return W0[i];
+    }
     const double lo = std::min<double>(std::min<double>(Lo[i], f), fit);
     const double hi = std::max<double>(std::max<double>(Hi[i], f), fit);
     return Scaled(MaxSlope(lo, hi));
@@ -66,6 +70,7 @@ private:
 
   std::vector<std::pair<double, double>> N;
   std::vector<float> Lo, Hi;
+  std::vector<double> W0; ///< Weight with the fit inside [Lo, Hi]
   double Fl = 1, GMax = 0;
 };
 } // namespace art

@@ -163,7 +163,10 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   std::vector<double> x;
   int iterations = fit.Solve(mesh, x, Opt.SolverTolerance);
   // The weighted fit is iteratively reweighted: the weights are taken at the current fit, so
-  // every tet's moments are re-gathered before each solve.
+  // every tet's moments are re-gathered before each solve (a pass over the voxels per level).
+  // Gathering only the tets a refinement touched, and all of them each time the mesh doubled,
+  // was measured 2x faster but 0.2-0.3 dB worse in the rendered image at 100k-250k tets (stale
+  // weights), no better than the plain fit.
   auto reweigh = [&]() {
     all.resize(static_cast<size_t>(mesh.NumberOfTets()));
     std::iota(all.begin(), all.end(), 0);
@@ -243,10 +246,19 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     }
     else if (weighted)
     {
-      // The weight follows the fit (a stray into an opacity ramp counts), so it takes a voxel pass.
-      VoxelErrorReport e = fit.VoxelErrors(mesh, x);
-      priority = std::move(e.TetWeightedSse);
-      global = e.WeightedRms;
+      // Weighted squared errors from the moments, whose weights were gathered at this level's
+      // starting fit (a second voxel pass per level for the weights at the solved fit changed
+      // the image by under 0.1 dB). An error bound that looks met is confirmed at the solved fit,
+      // since the weight follows the fit (a stray into an opacity ramp counts).
+      fit.SquaredErrors(mesh, x, priority);
+      global = std::sqrt(std::accumulate(priority.begin(), priority.end(), 0.0) / nvox);
+      if (haveError && global <= errorBound)
+      {
+        reweigh();
+        VoxelErrorReport e = fit.VoxelErrors(mesh, x);
+        priority = std::move(e.TetWeightedSse);
+        global = e.WeightedRms;
+      }
     }
     else
     {
