@@ -9,6 +9,7 @@
 #include "MeshQuality.h"
 #include "Progress.h"
 #include "ProgressBar.h"
+#include "ReductionTargets.h"
 #include "ReducerVTK.h"
 #include "TetReducer.h"
 
@@ -26,19 +27,6 @@
 
 namespace
 {
-// "N" or "P%" (a percentage of the voxel count) -> tets.
-long long ParseBudget(const std::string& s, long long voxels, const std::string& what)
-{
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  const bool pct = end && *end == '%' && end[1] == 0;
-  if (s.empty() || !end || (*end && !pct) || !(v > 0) || !std::isfinite(v))
-  {
-    throw cli::UsageError(what + " wants a positive number or a percentage, got '" + s + "'");
-  }
-  return pct ? std::llround(v / 100.0 * voxels) : std::llround(v);
-}
-
 std::string Grouped(long long n)
 {
   std::string s = std::to_string(n), o;
@@ -117,19 +105,11 @@ int Run(const cli::Options& o)
   }
   if (o.Has("tets"))
   {
-    opt.TargetTets = ParseBudget(o.Get("tets"), voxels, "--tets");
+    opt.TargetTets = cli::ParseBudget(o.Get("tets"), voxels, "--tets");
   }
   if (o.Has("max-error"))
   {
-    std::string e = o.Get("max-error");
-    opt.ErrorRelative = !e.empty() && e.back() == '%';
-    char* end = nullptr;
-    const double v = std::strtod(e.c_str(), &end);
-    if (e.empty() || (end && *end && !(opt.ErrorRelative && end[1] == 0 && *end == '%')) || !(v >= 0) || !std::isfinite(v))
-    {
-      throw cli::UsageError("--max-error wants a number or a percentage, got '" + e + "'");
-    }
-    opt.TargetError = opt.ErrorRelative ? v / 100.0 : v;
+    opt.TargetError = cli::ParseMaxError(o.Get("max-error"), opt.ErrorRelative);
   }
   if (o.Has("levels"))
   {
@@ -138,7 +118,7 @@ int Run(const cli::Options& o)
     while (a <= list.size())
     {
       const size_t b = std::min(list.find(',', a), list.size());
-      const long long n = ParseBudget(list.substr(a, b - a), voxels, "--levels");
+      const long long n = cli::ParseBudget(list.substr(a, b - a), voxels, "--levels");
       if (opt.TargetTets <= 0 || n < opt.TargetTets)
       {
         opt.Levels.push_back(n);

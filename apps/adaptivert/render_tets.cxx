@@ -11,6 +11,7 @@
 #include "ParallelTiles.h"
 #include "ProgressBar.h"
 #include "ReducedTets.h"
+#include "ReductionTargets.h"
 #include "Render.h"
 #include "TetMesh.h"
 #include "TetRayCaster.h"
@@ -53,8 +54,8 @@ void Declare(cli::Options& o)
   o.Add("ert", 0, "A", "early ray termination at this opacity (1 = off)", "0.99");
   o.Add("integrator", 0, "RULE", "segment rule: exact or trapezoid (the paper's)", "exact");
   o.Add("mip", 0, "", "maximum-intensity projection instead of emission-absorption");
-  o.Add("tets", 0, "N", "reduce a volume to about N adaptive tets first");
-  o.Add("max-error", 0, "E", "reduce a volume until the RMS error is at most E (data units)");
+  o.Add("tets", 0, "N", "reduce a volume to about N adaptive tets first (or N% of the voxel count)");
+  o.Add("max-error", 0, "E", "reduce a volume until the RMS error is at most E data units (E% of the scalar range)");
   o.Add("plain-reduction", 0, "",
     "reduce in plain L2, not weighted by the transfer function's opacity (a few times faster on large volumes)");
   o.Add("reference", 0, "", "render the full-resolution voxel reference instead");
@@ -144,9 +145,10 @@ int Run(const cli::Options& o, const std::string& input)
       {
 #ifdef ART_HAVE_Reduction
         art::ReducerOptions ro;
+        const long long voxels = volume->GetNumberOfPoints();
         if (o.Has("tets"))
         {
-          ro.TargetTets = o.GetInt("tets");
+          ro.TargetTets = cli::ParseBudget(o.Get("tets"), voxels, "--tets");
           if (ro.TargetTets < 6)
           {
             throw cli::UsageError("--tets expects a count of at least 6");
@@ -154,7 +156,7 @@ int Run(const cli::Options& o, const std::string& input)
         }
         if (o.Has("max-error"))
         {
-          ro.TargetError = o.GetDouble("max-error");
+          ro.TargetError = cli::ParseMaxError(o.Get("max-error"), ro.ErrorRelative);
         }
         if (!o.Flag("plain-reduction") && settings.mode == art::RenderSettings::Mode::Composite)
         {

@@ -1,0 +1,32 @@
+#include "ReductionTargets.h"
+#include "Options.h"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace cli
+{
+long long ParseBudget(const std::string& s, long long voxels, const std::string& what)
+{
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  const bool pct = end && *end == '%' && end[1] == 0;
+  if (s.empty() || !end || (*end && !pct) || !(v > 0) || !std::isfinite(v))
+  {
+    throw UsageError(what + " wants a positive number or a percentage, got '" + s + "'");
+  }
+  return pct ? std::llround(v / 100.0 * voxels) : std::llround(v);
+}
+
+double ParseMaxError(const std::string& s, bool& relative)
+{
+  relative = !s.empty() && s.back() == '%';
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || (end && *end && !(relative && end[1] == 0 && *end == '%')) || !(v >= 0) || !std::isfinite(v))
+  {
+    throw UsageError("--max-error wants a number or a percentage, got '" + s + "'");
+  }
+  return relative ? v / 100.0 : v;
+}
+} // namespace cli

@@ -1,0 +1,16 @@
+// ReductionTargets: the reducer's stopping targets as the command line spells them, shared by
+// `reduce` and `render`: --tets N or P% (of the voxel count), --max-error E or P% (of the range).
+#ifndef adaptivert_ReductionTargets_h
+#define adaptivert_ReductionTargets_h
+
+#include <string>
+
+namespace cli
+{
+/// "N" or "P%" -> tets; throws UsageError naming `what` otherwise.
+long long ParseBudget(const std::string& s, long long voxels, const std::string& what);
+/// "E" or "P%" -> the error bound and whether it is a fraction of the scalar range (P / 100).
+double ParseMaxError(const std::string& s, bool& relative);
+}
+
+#endif
