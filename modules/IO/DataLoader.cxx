@@ -117,6 +117,14 @@ void RunReader(vtkAlgorithm* reader, const std::string& path)
   }
 }
 
+template <class Reader>
+vtkSmartPointer<vtkAlgorithm> FileReader(const std::string& path)
+{
+  auto r = vtkSmartPointer<Reader>::New();
+  r->SetFileName(path.c_str());
+  return r;
+}
+
 void CheckPolyIndices(vtkPolyData* pd, const std::string& path)
 {
   const vtkIdType n = pd->GetNumberOfPoints();
@@ -284,33 +292,23 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   else if (e == ".mha" || e == ".mhd")
   {
     CheckMetaImage(path);
-    auto r = vtkSmartPointer<vtkMetaImageReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkMetaImageReader>(path);
   }
   else if (e == ".nii" || e == ".nii.gz")
   {
-    auto r = vtkSmartPointer<vtkNIFTIImageReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkNIFTIImageReader>(path);
   }
   else if (e == ".vti")
   {
-    auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkXMLImageDataReader>(path);
   }
   else if (e == ".vtk")
   {
-    auto r = vtkSmartPointer<vtkDataSetReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkDataSetReader>(path);
   }
   else
   {
-    auto r = vtkSmartPointer<vtkNrrdReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkNrrdReader>(path);
   }
   RunReader(reader, path);
   auto img = vtkSmartPointer<vtkImageData>::New();
@@ -338,33 +336,23 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   if (e == ".ply")
   {
     CheckPly(path);
-    auto r = vtkSmartPointer<vtkPLYReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkPLYReader>(path);
   }
   else if (e == ".obj")
   {
-    auto r = vtkSmartPointer<vtkOBJReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkOBJReader>(path);
   }
   else if (e == ".stl")
   {
-    auto r = vtkSmartPointer<vtkSTLReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkSTLReader>(path);
   }
   else if (e == ".vtk")
   {
-    auto r = vtkSmartPointer<vtkDataSetReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkDataSetReader>(path);
   }
   else
   {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkXMLPolyDataReader>(path);
   }
   RunReader(reader, path);
   auto pd = vtkSmartPointer<vtkPolyData>::New();
@@ -387,27 +375,19 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)
   vtkSmartPointer<vtkAlgorithm> reader;
   if (e == ".vtu")
   {
-    auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkXMLUnstructuredGridReader>(path);
   }
   else if (e == ".vts")
   {
-    auto r = vtkSmartPointer<vtkXMLStructuredGridReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkXMLStructuredGridReader>(path);
   }
   else if (e == ".vtr")
   {
-    auto r = vtkSmartPointer<vtkXMLRectilinearGridReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkXMLRectilinearGridReader>(path);
   }
   else
   {
-    auto r = vtkSmartPointer<vtkDataSetReader>::New();
-    r->SetFileName(path.c_str());
-    reader = r;
+    reader = FileReader<vtkDataSetReader>(path);
   }
   RunReader(reader, path);
   vtkSmartPointer<vtkUnstructuredGrid> ug = vtkUnstructuredGrid::SafeDownCast(reader->GetOutputDataObject(0));
