@@ -24,11 +24,21 @@ struct FaceCrossing
   double t = 0, s = 0;
 };
 
+/// Meshes with more tets than this walk with jumps rather than lookups (WalkFaces). Set between
+/// the meshes measured: 200k tets (10 MB walked, in the cache) and 4.3M (170 MB, not).
+constexpr std::size_t SpeculativeWalkTets = std::size_t(1) << 20;
+
 /// The face-to-face walk shared by TetWalker and ProjectedWalker: Geo supplies the corners, the
 /// side products and the exit crossing (see TetWalker's geometry members), the walk the rest.
-template <class Geo, class Visit>
-void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossing in, Visit&& visit,
-  FaceCrossing& out, std::uint64_t& steps, std::uint64_t& nudges)
+/// Which face the ray leaves by is as random as a coin. Without Speculate, everything that
+/// depends on it is looked up by its index (tables and masks, no jumps to mispredict); with
+/// Speculate it is chosen by jumps, which lets the processor fetch the next tet and its corners
+/// from memory before this step is decided, right about half the time, which is what counts
+/// once the mesh is far larger than the caches. Measured with the projected walk, both forms in
+/// one process: lookups 5-16% faster on the 10k-200k tet CT meshes, jumps 10-18% on the 4.3M.
+template <bool Speculate, class Geo, class Visit>
+void WalkFacesWith(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossing in,
+  Visit&& visit, FaceCrossing& out, std::uint64_t& steps, std::uint64_t& nudges)
 {
   const std::size_t limit = M.NumberOfTets() + 8;
   int stuck = 0;
@@ -70,11 +80,14 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
     const double pa = g.Side(a, d), pb = g.Side(b, d), pc = g.Side(c, d);
     // Outward edge products of each candidate face (entry edge first); a face's vertices weigh
     // the products of their opposite edges. Face A, opposite a: (c, b, d) with (-ebc, pb, -pc);
-    // B: (a, c, d) with (-eca, pc, -pa); C: (b, a, d) with (-eab, pa, -pb). The exit face is
-    // data, not a branch (it is as good as random): everything that depends on it is looked up
-    // in these tables by its index, so the step has no mispredicted jumps.
+    // B: (a, c, d) with (-eca, pc, -pa); C: (b, a, d) with (-eab, pa, -pb). Without Speculate
+    // they are looked up by the face's index in vals.
+    auto face = [&](int k, double* f) {
+      f[0] = k == 0 ? -ebc : (k == 1 ? -eca : -eab);
+      f[1] = k == 0 ? pb : (k == 1 ? pc : pa);
+      f[2] = k == 0 ? -pc : (k == 1 ? -pa : -pb);
+    };
     const double vals[13] = { eab, ebc, eca, -eab, -ebc, -eca, pa, pb, pc, -pa, -pb, -pc, 0.0 };
-    static constexpr signed char faceOf[4][3] = { { 4, 7, 11 }, { 5, 8, 9 }, { 3, 6, 10 }, { 12, 12, 12 } };
     // The signs of pa, pb, pc name the exit face (A: pb >= 0 >= pc, B: pc >= 0 >= pa,
     // C: pa >= 0 >= pb; 3: none). Only a strictly interior crossing is taken on that word; a
     // crossing on an edge or vertex (a zero product) or a failed test goes to the full rule: a
@@ -84,14 +97,27 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
     // fails the strict test below whichever face the word names, or does not enter its face.
     static constexpr int byCode[8] = { 3, 1, 0, 1, 2, 2, 0, 3 };
     int x = byCode[7 ^ (std::signbit(pa) << 2 | std::signbit(pb) << 1 | std::signbit(pc))];
-    double e[3] = { vals[faceOf[x][0]], vals[faceOf[x][1]], vals[faceOf[x][2]] };
+    double e[3] = { 0, 0, 0 };
+    if constexpr (Speculate)
+    {
+      if (x < 3)
+      {
+        face(x, e);
+      }
+    }
+    else
+    {
+      static constexpr signed char faceOf[4][3] = { { 4, 7, 11 }, { 5, 8, 9 }, { 3, 6, 10 }, { 12, 12, 12 } };
+      e[0] = vals[faceOf[x][0]], e[1] = vals[faceOf[x][1]], e[2] = vals[faceOf[x][2]];
+    }
     if (!(std::min(e[0], std::min(e[1], e[2])) > 0))
     {
       double bestLo = -1e300;
       bool proper = false;
       for (int k = 0; k < 3; ++k)
       {
-        const double f[3] = { vals[faceOf[k][0]], vals[faceOf[k][1]], vals[faceOf[k][2]] };
+        double f[3];
+        face(k, f);
         const double lo = std::min(f[0], std::min(f[1], f[2]));
         const bool ok = lo >= 0 && f[0] + f[1] + f[2] > 0;
         if ((ok && !proper) || (ok == proper && lo > bestLo))
@@ -102,25 +128,42 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
         }
       }
       nudges += proper ? 0 : 1;
-      e[0] = vals[faceOf[x][0]], e[1] = vals[faceOf[x][1]], e[2] = vals[faceOf[x][2]];
+      face(x, e);
     }
-    // The exit face as (u, w, d): (c b d), (a c d) or (b a d); u <- e[1], w <- e[2], d <- e[0].
+    // The exit face as (u, w, d): (c b d), (a c d) or (b a d); u <- e[1], w <- e[2], d <- e[0];
+    // it is opposite the vertex a, b or c, whose slot in this tet names the link to the next.
+    const Corner* u;
+    const Corner* w;
+    int opp;
     Corner* const cp[4] = { ia, ib, ic, id };
-    static constexpr signed char uOf[3] = { 2, 0, 1 }, wOf[3] = { 1, 2, 0 };
-    const Corner& u = *cp[uOf[x]];
-    const Corner& w = *cp[wOf[x]];
-    g.Exit(u, w, d, std::max(e[1], 0.0), std::max(e[2], 0.0), std::max(e[0], 0.0), in.t, out);
+    if constexpr (Speculate)
+    {
+      u = x == 0 ? &c : (x == 1 ? &a : &b);
+      w = x == 0 ? &b : (x == 1 ? &c : &a);
+      opp = x == 0 ? a.id : (x == 1 ? b.id : c.id);
+    }
+    else
+    {
+      static constexpr signed char uOf[3] = { 2, 0, 1 }, wOf[3] = { 1, 2, 0 };
+      u = cp[uOf[x]], w = cp[wOf[x]], opp = cp[x]->id;
+    }
+    g.Exit(*u, *w, d, std::max(e[1], 0.0), std::max(e[2], 0.0), std::max(e[0], 0.0), in.t, out);
     if (!visit(t, in, out))
     {
       return;
     }
     stuck = out.t > in.t ? 0 : stuck + 1;
-    // The exit face is opposite the vertex a, b or c: find its slot in this tet.
-    const int opp = cp[x]->id;
     const int* fv = TetMesh::FaceVertex[entryFace];
-    // In masks, not jumps: which of the three it is is as random as the exit face.
-    const int m0 = -int(v[fv[0]] == opp), m1 = -int(v[fv[1]] == opp) & ~m0;
-    const int slot = (fv[0] & m0) | (fv[1] & m1) | (fv[2] & ~(m0 | m1));
+    int slot;
+    if constexpr (Speculate)
+    {
+      slot = v[fv[0]] == opp ? fv[0] : (v[fv[1]] == opp ? fv[1] : fv[2]);
+    }
+    else
+    {
+      const int m0 = -int(v[fv[0]] == opp), m1 = -int(v[fv[1]] == opp) & ~m0;
+      slot = (fv[0] & m0) | (fv[1] & m1) | (fv[2] & ~(m0 | m1));
+    }
     const int link = M.Link(t, slot);
     if (link < 0 || stuck > 256)
     {
@@ -129,13 +172,49 @@ void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossin
     // The exit face reversed is the next tet's entry face, outward for that tet: (c, d, b) with
     // products (pc, -pb, ebc), (a, d, c) with (pa, -pc, eca), or (a, b, d) with (eab, pb, -pa);
     // the corner left behind frees its slot for the next apex.
-    static constexpr signed char nextE[3][3] = { { 8, 10, 1 }, { 6, 11, 2 }, { 0, 7, 9 } };
-    static constexpr signed char nextC[3][4] = { { 2, 3, 1, 0 }, { 0, 3, 2, 1 }, { 0, 1, 3, 2 } };
-    eab = vals[nextE[x][0]], ebc = vals[nextE[x][1]], eca = vals[nextE[x][2]];
-    ia = cp[nextC[x][0]], ib = cp[nextC[x][1]], ic = cp[nextC[x][2]], id = cp[nextC[x][3]];
+    if constexpr (Speculate)
+    {
+      if (x == 0)
+      {
+        const double nab = pc, nbc = -pb, nca = ebc;
+        eab = nab, ebc = nbc, eca = nca;
+        ia = cp[2], ib = cp[3], ic = cp[1], id = cp[0];
+      }
+      else if (x == 1)
+      {
+        eab = pa, ebc = -pc;
+        std::swap(ib, id);
+      }
+      else
+      {
+        ebc = pb, eca = -pa;
+        std::swap(ic, id);
+      }
+    }
+    else
+    {
+      static constexpr signed char nextE[3][3] = { { 8, 10, 1 }, { 6, 11, 2 }, { 0, 7, 9 } };
+      static constexpr signed char nextC[3][4] = { { 2, 3, 1, 0 }, { 0, 3, 2, 1 }, { 0, 1, 3, 2 } };
+      eab = vals[nextE[x][0]], ebc = vals[nextE[x][1]], eca = vals[nextE[x][2]];
+      ia = cp[nextC[x][0]], ib = cp[nextC[x][1]], ic = cp[nextC[x][2]], id = cp[nextC[x][3]];
+    }
     t = TetMesh::LinkTet(link);
     entryFace = TetMesh::LinkFace(link);
     in = out;
+  }
+}
+
+template <class Geo, class Visit>
+void WalkFaces(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCrossing in, Visit&& visit,
+  FaceCrossing& out, std::uint64_t& steps, std::uint64_t& nudges)
+{
+  if (M.NumberOfTets() > SpeculativeWalkTets)
+  {
+    WalkFacesWith<true>(M, g, t, entryFace, in, visit, out, steps, nudges);
+  }
+  else
+  {
+    WalkFacesWith<false>(M, g, t, entryFace, in, visit, out, steps, nudges);
   }
 }
 

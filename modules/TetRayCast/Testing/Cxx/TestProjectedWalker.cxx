@@ -46,6 +46,24 @@ Path Follow(const TetMesh& m, const W& w, const Entry& e)
   return p;
 }
 
+// Every crossing of one piece, walked by WalkFacesWith<Speculate> (the walk's two loop forms).
+template <bool Speculate, class W>
+std::vector<double> Crossings(const TetMesh& m, const W& w, const Entry& e)
+{
+  std::vector<double> x;
+  FaceCrossing out;
+  std::uint64_t steps = 0, nudges = 0;
+  const auto& bf = m.BoundaryFaces()[e.face];
+  WalkFacesWith<Speculate>(m, w, bf[0], bf[1], e.x,
+    [&](int t, const FaceCrossing& a, const FaceCrossing& b) {
+      x.insert(x.end(), { double(t), a.t, a.s, b.t, b.s });
+      return true;
+    },
+    out, steps, nudges);
+  x.insert(x.end(), { out.t, out.s, double(nudges) });
+  return x;
+}
+
 struct Tally
 {
   int rays = 0, pieces = 0, sameTets = 0;
@@ -74,6 +92,9 @@ Tally Compare(const TetMesh& m, const Camera& cam, const char* what)
       {
         const Path a = Follow(m, w, e), b = Follow(m, pw, e);
         ++n.pieces;
+        // The jump and lookup forms of the loop give the same bits, for both walkers.
+        EXPECT_EQ(Crossings<true>(m, w, e), Crossings<false>(m, w, e)) << what << " pixel " << x << "," << y;
+        EXPECT_EQ(Crossings<true>(m, pw, e), Crossings<false>(m, pw, e)) << what << " pixel " << x << "," << y;
         n.sameTets += a.tets == b.tets ? 1 : 0;
         const bool same = std::fabs(a.tEnd - b.tEnd) <= 1e-9 * (1 + std::fabs(a.tEnd)) &&
           std::fabs(a.integral - b.integral) <= 1e-9 && std::fabs(a.maxS - b.maxS) <= 1e-9;
