@@ -17,9 +17,12 @@
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -62,6 +65,30 @@ int Run(const cli::Options& o, const std::string& input)
 
   auto t0 = std::chrono::steady_clock::now();
   vtkSmartPointer<vtkPolyData> pd = art::LoadSurface(input);
+  // The store traces in float: a scene far from the origin (survey or CAD coordinates) would lose
+  // its triangles to rounding, so it is moved to the origin, with the camera and lights given.
+  art::Vec3 shift;
+  {
+    double b[6];
+    pd->GetBounds(b);
+    const art::Vec3 lo(b[0], b[2], b[4]), hi(b[1], b[3], b[5]), c = (lo + hi) * 0.5;
+    if (std::max(std::fabs(c.x), std::max(std::fabs(c.y), std::fabs(c.z))) > 1e3 * Length(hi - lo))
+    {
+      shift = c;
+      vtkNew<vtkPoints> moved;
+      moved->SetDataTypeToDouble();
+      moved->SetNumberOfPoints(pd->GetNumberOfPoints());
+      for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+      {
+        const art::Vec3 q = art::Vec3(pd->GetPoint(i)) - shift;
+        moved->SetPoint(i, q.x, q.y, q.z);
+      }
+      auto copy = vtkSmartPointer<vtkPolyData>::New();
+      copy->ShallowCopy(pd);
+      copy->SetPoints(moved);
+      pd = copy;
+    }
+  }
   auto store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd));
   if (store->Size() == 0)
   {
@@ -98,8 +125,8 @@ int Run(const cli::Options& o, const std::string& input)
   vcam->SetViewAngle(angle);
   if (o.Has("camera-position"))
   {
-    const art::Vec3 p = ParseVec(o.Get("camera-position"), "--camera-position");
-    const art::Vec3 f = o.Has("focal-point") ? ParseVec(o.Get("focal-point"), "--focal-point") : bounds.Center();
+    const art::Vec3 p = ParseVec(o.Get("camera-position"), "--camera-position") - shift;
+    const art::Vec3 f = o.Has("focal-point") ? ParseVec(o.Get("focal-point"), "--focal-point") - shift : bounds.Center();
     if (p == f)
     {
       throw cli::UsageError("--camera-position and --focal-point must differ");
@@ -131,7 +158,7 @@ int Run(const cli::Options& o, const std::string& input)
     std::string item;
     while (std::getline(ss, item, ';'))
     {
-      s.lights.push_back({ ParseVec(item, "--lights"), 0.0 });
+      s.lights.push_back({ ParseVec(item, "--lights") - shift, 0.0 });
     }
     for (auto& l : s.lights)
     {
