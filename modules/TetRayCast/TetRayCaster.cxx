@@ -184,7 +184,9 @@ struct TetRayCaster::Impl
     // into one surface, so of two coincident faces (the exit of one piece and the entry of the
     // next, as in a mesh whose tets keep their own points) only one would be tried.
     thread_local std::vector<long long> cand;
-    rc.Boundary->Candidates(r, cand, c);
+    Ray local = r;
+    local.org = r.org - rc.BoundaryOrigin;
+    rc.Boundary->Candidates(local, cand, c);
     out.clear();
     const auto& bfs = rc.M.BoundaryFaces();
     for (long long b : cand)
@@ -285,7 +287,14 @@ TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
   }
   if (!M.IsConvex() && S.boundaryGrid)
   {
-    const auto& pts = M.PointsArray();
+    // The grid stores floats: its points are taken about the mesh's centre (and rays moved alike)
+    // so a mesh far from the origin, in survey coordinates, keeps its faces apart.
+    BoundaryOrigin = M.Bounds().Center();
+    std::vector<Vec3> pts(M.PointsArray());
+    for (Vec3& p : pts)
+    {
+      p = p - BoundaryOrigin;
+    }
     std::vector<std::array<long long, 3>> tris;
     tris.reserve(M.BoundaryFaces().size());
     for (const auto& bf : M.BoundaryFaces())
@@ -294,7 +303,7 @@ TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
       const int* fv = TetMesh::FaceVertex[bf[1]];
       tris.push_back({ v[fv[0]], v[fv[1]], v[fv[2]] });
     }
-    Boundary = MakeAccelerator(std::make_shared<const TriangleStore>(pts, tris));
+    Boundary = MakeAccelerator(std::make_shared<const TriangleStore>(std::move(pts), tris));
   }
 }
 

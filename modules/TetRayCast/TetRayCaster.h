@@ -95,6 +95,7 @@ private:
   const TetMesh& M;
   RenderSettings S;
   std::unique_ptr<const Accelerator> Boundary; ///< boundary triangles of a non-convex mesh
+  Vec3 BoundaryOrigin;                          ///< where Boundary's coordinates are taken from
 };
 } // namespace art
 

@@ -212,4 +212,30 @@ TEST_P(NonConvex, TetsWithTheirOwnPoints)
   EXPECT_GT(crossed, 200);
 }
 
+// The L-shape 2.5e7 units from the origin (survey coordinates): the boundary grid stores floats,
+// so it is built about the mesh's centre; rays still enter both arms.
+TEST_P(NonConvex, FarFromTheOrigin)
+{
+  RenderSettings settings = Settings();
+  settings.boundaryGrid = GetParam();
+  const Vec3 o(2.5e7, -1e7, 4e6);
+  auto wavy = [&](const Vec3& p) { return Wavy(p - o); };
+  const TetMesh L = fixtures::GridMesh(4, 4, 2, o, { 0.5, 0.5, 0.5 }, wavy, 6,
+    [](int i, int j, int) { return !(i >= 2 && j >= 2); });
+  const TetRayCaster rc(L, settings);
+  int twice = 0;
+  for (int i = 0; i < 60; ++i)
+  {
+    const double a = 0.3 + i * 0.08;
+    const Vec3 dir(std::cos(a), std::sin(a), 0.1 * std::sin(3 * a));
+    const Ray r = MakeRay(o + Vec3(1.0 + 0.2 * std::sin(i), 1.0 + 0.2 * std::cos(i * 1.3), 0.5) - dir * 4, dir);
+    const RayResult got = rc.Cast(r);
+    const RayAccum ref = fixtures::BruteForce(L, rc.Settings().tf, r);
+    ASSERT_NEAR(got.rgba[3], ref.Alpha(), 1e-6) << i;
+    ASSERT_NEAR(got.rgba[0], ref.rgb[0], 1e-6) << i;
+    twice += got.pieces == 2 ? 1 : 0;
+  }
+  EXPECT_GT(twice, 5);
+}
+
 INSTANTIATE_TEST_SUITE_P(TetStability, NonConvex, ::testing::Values(true, false));
