@@ -17,12 +17,9 @@
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -65,31 +62,12 @@ int Run(const cli::Options& o, const std::string& input)
 
   auto t0 = std::chrono::steady_clock::now();
   vtkSmartPointer<vtkPolyData> pd = art::LoadSurface(input);
-  // The store traces in float: a scene far from the origin (survey or CAD coordinates) would lose
-  // its triangles to rounding, so it is moved to the origin, with the camera and lights given.
-  art::Vec3 shift;
-  {
-    double b[6];
-    pd->GetBounds(b);
-    const art::Vec3 lo(b[0], b[2], b[4]), hi(b[1], b[3], b[5]), c = (lo + hi) * 0.5;
-    if (std::max(std::fabs(c.x), std::max(std::fabs(c.y), std::fabs(c.z))) > 1e3 * Length(hi - lo))
-    {
-      shift = c;
-      vtkNew<vtkPoints> moved;
-      moved->SetDataTypeToDouble();
-      moved->SetNumberOfPoints(pd->GetNumberOfPoints());
-      for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
-      {
-        const art::Vec3 q = art::Vec3(pd->GetPoint(i)) - shift;
-        moved->SetPoint(i, q.x, q.y, q.z);
-      }
-      auto copy = vtkSmartPointer<vtkPolyData>::New();
-      copy->ShallowCopy(pd);
-      copy->SetPoints(moved);
-      pd = copy;
-    }
-  }
-  auto store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd));
+  // A scene far from the origin is traced about its centre (TriangleStore::OriginFor): the camera
+  // and lights given on the command line move with it.
+  double pb[6];
+  pd->GetBounds(pb);
+  const art::Vec3 shift = art::TriangleStore::OriginFor(art::Box3::FromBounds(pb));
+  auto store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd, shift));
   if (store->Size() == 0)
   {
     throw art::Error("has no triangles to render", input);

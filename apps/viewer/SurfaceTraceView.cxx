@@ -29,6 +29,7 @@ namespace view
 struct SurfaceTraceView::Internals
 {
   std::shared_ptr<art::TriangleStore> Store;
+  art::Vec3 Origin; ///< the store's coordinates are taken from here (TriangleStore::OriginFor)
   std::unique_ptr<art::Accelerator> Acc;
   std::vector<std::array<float, 3>> Colors;
   vtkNew<vtkImageData> Frame;
@@ -40,7 +41,10 @@ struct SurfaceTraceView::Internals
 SurfaceTraceView::SurfaceTraceView(vtkPolyData* pd, const std::string& file)
   : Impl(new Internals)
 {
-  Impl->Store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd));
+  double b[6];
+  pd->GetBounds(b);
+  Impl->Origin = art::TriangleStore::OriginFor(art::Box3::FromBounds(b));
+  Impl->Store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd, Impl->Origin));
   if (Impl->Store->Size() == 0)
   {
     throw art::Error("has no triangles to show", file);
@@ -83,7 +87,12 @@ void SurfaceTraceView::Trace(vtkRenderer* ren)
 {
   const int* size = ren->GetSize();
   const int w = std::max(1, size[0] / Sample), h = std::max(1, size[1] / Sample);
-  vtkCamera* vcam = ren->GetActiveCamera();
+  // The camera in the store's coordinates.
+  vtkNew<vtkCamera> vcam;
+  vcam->DeepCopy(ren->GetActiveCamera());
+  const art::Vec3 pos = art::Vec3(vcam->GetPosition()) - Impl->Origin, fp = art::Vec3(vcam->GetFocalPoint()) - Impl->Origin;
+  vcam->SetPosition(pos.x, pos.y, pos.z);
+  vcam->SetFocalPoint(fp.x, fp.y, fp.z);
   // A headlight and a key light above-left of the camera (the CLI's default lights).
   art::SurfaceTracerSettings s;
   s.lights = art::HeadAndKeyLights(
@@ -121,7 +130,8 @@ void SurfaceTraceView::Trace(vtkRenderer* ren)
 
 art::Box3 SurfaceTraceView::Bounds() const
 {
-  return Impl->Store->Bounds();
+  const art::Box3 b = Impl->Store->Bounds();
+  return art::Box3(b.lo + Impl->Origin, b.hi + Impl->Origin);
 }
 
 double SurfaceTraceView::LastTraceSeconds() const

@@ -179,7 +179,13 @@ void TriangleStore::Build(std::vector<Vec3> points, const std::vector<std::array
   }
 }
 
-TriangleStore TriangleStore::FromPolyData(vtkPolyData* pd)
+Vec3 TriangleStore::OriginFor(const Box3& b)
+{
+  const Vec3 c = b.Center();
+  return std::max(std::fabs(c.x), std::max(std::fabs(c.y), std::fabs(c.z))) > 1e3 * b.Diagonal() ? c : Vec3();
+}
+
+TriangleStore TriangleStore::FromPolyData(vtkPolyData* pd, const Vec3& origin)
 {
   if (!pd)
   {
@@ -188,7 +194,7 @@ TriangleStore TriangleStore::FromPolyData(vtkPolyData* pd)
   std::vector<Vec3> pts(static_cast<size_t>(pd->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
   {
-    pts[i] = Vec3(pd->GetPoint(i));
+    pts[i] = Vec3(pd->GetPoint(i)) - origin;
   }
   std::vector<std::array<long long, 3>> tris;
   std::vector<long long> original;

@@ -51,9 +51,14 @@ public:
   TriangleStore() = default;
   /// Triangles index `points`; zero-area ones and ones with a bad index are dropped.
   TriangleStore(std::vector<Vec3> points, const std::vector<std::array<long long, 3>>& triangles);
-  /// Triangulates polygons and strips of `pd` (vertices and lines are ignored);
-  /// OriginalIndex gives the polydata cell id of each record. Throws art::Error on null input.
-  static TriangleStore FromPolyData(vtkPolyData* pd);
+  /// Triangulates polygons and strips of `pd` (vertices and lines are ignored), its points taken
+  /// relative to `origin`; OriginalIndex gives the polydata cell id of each record. Throws
+  /// art::Error on null input.
+  static TriangleStore FromPolyData(vtkPolyData* pd, const Vec3& origin = Vec3());
+  /// Where to take a scene's coordinates from: its centre when that lies more than 1000 of its
+  /// diagonals from the origin (survey or CAD coordinates, whose triangles the store's floats would
+  /// collapse), else the origin itself (so ordinary scenes keep their exact coordinates).
+  static Vec3 OriginFor(const Box3& bounds);
 
   size_t Size() const { return Records.size(); }
   Box3 Bounds() const { return Box; }

@@ -18,12 +18,13 @@ vtkStandardNewMacro(vtkTriangleGridLocator);
 
 namespace
 {
-// VTK's line queries take a segment p1 -> p2 with t in [0, 1]: the ray from p1 along p2 - p1.
-art::Ray SegmentRay(const double p1[3], const double p2[3])
+// VTK's line queries take a segment p1 -> p2 with t in [0, 1]: the ray from p1 along p2 - p1,
+// in the engine's coordinates (taken from `origin`; t is the same in both).
+art::Ray SegmentRay(const double p1[3], const double p2[3], const double origin[3])
 {
   art::Ray r;
-  r.org = art::Vec3(p1);
-  r.dir = art::Vec3(p2) - r.org;
+  r.org = art::Vec3(p1) - art::Vec3(origin);
+  r.dir = art::Vec3(p2) - art::Vec3(p1);
   r.tmin = 0;
   r.tmax = 1;
   return r;
@@ -64,7 +65,11 @@ void vtkTriangleGridLocator::BuildLocatorInternal()
   }
   try
   {
-    auto store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd));
+    double b[6];
+    pd->GetBounds(b);
+    const art::Vec3 origin = art::TriangleStore::OriginFor(art::Box3::FromBounds(b));
+    this->Origin[0] = origin.x, this->Origin[1] = origin.y, this->Origin[2] = origin.z;
+    auto store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd, origin));
     art::AcceleratorOptions o;
     o.kind = static_cast<art::AcceleratorKind>(this->AcceleratorType);
     o.voxelThreshold = this->VoxelThreshold;
@@ -90,7 +95,7 @@ int vtkTriangleGridLocator::IntersectWithLine(const double p1[3], const double p
   {
     return 0;
   }
-  const art::Ray r = SegmentRay(p1, p2);
+  const art::Ray r = SegmentRay(p1, p2, this->Origin);
   art::Hit h;
   art::Counters c;
   if (!this->Engine->Closest(r, h, c))
@@ -98,7 +103,7 @@ int vtkTriangleGridLocator::IntersectWithLine(const double p1[3], const double p
     return 0;
   }
   t = h.t;
-  const art::Vec3 p = r.At(h.t);
+  const art::Vec3 p = r.At(h.t) + art::Vec3(this->Origin);
   x[0] = p.x;
   x[1] = p.y;
   x[2] = p.z;
@@ -129,7 +134,7 @@ int vtkTriangleGridLocator::IntersectWithLine(
   {
     return 0;
   }
-  art::Ray r = SegmentRay(p1, p2); // tmax is widened below for the inside test
+  art::Ray r = SegmentRay(p1, p2, this->Origin); // tmax is widened below for the inside test
   std::vector<art::Hit> hits;
   art::Counters c;
   this->Engine->All(r, hits, c);
@@ -137,7 +142,7 @@ int vtkTriangleGridLocator::IntersectWithLine(
   {
     if (points)
     {
-      const art::Vec3 p = r.At(h.t);
+      const art::Vec3 p = r.At(h.t) + art::Vec3(this->Origin);
       points->InsertNextPoint(p.x, p.y, p.z);
     }
     if (cellIds)
@@ -164,7 +169,7 @@ void vtkTriangleGridLocator::FindCellsAlongLine(const double p1[3], const double
   {
     return;
   }
-  const art::Ray r = SegmentRay(p1, p2);
+  const art::Ray r = SegmentRay(p1, p2, this->Origin);
   std::vector<long long> ids;
   art::Counters c;
   this->Engine->Candidates(r, ids, c);
@@ -192,7 +197,8 @@ void vtkTriangleGridLocator::GenerateRepresentation(int level, vtkPolyData* pd)
     const vtkIdType base = pts->GetNumberOfPoints();
     for (int k = 0; k < 8; ++k)
     {
-      pts->InsertNextPoint(k & 1 ? b.hi.x : b.lo.x, k & 2 ? b.hi.y : b.lo.y, k & 4 ? b.hi.z : b.lo.z);
+      pts->InsertNextPoint((k & 1 ? b.hi.x : b.lo.x) + this->Origin[0], (k & 2 ? b.hi.y : b.lo.y) + this->Origin[1],
+        (k & 4 ? b.hi.z : b.lo.z) + this->Origin[2]);
     }
     for (const auto& f : faces)
     {

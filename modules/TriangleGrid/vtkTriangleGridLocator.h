@@ -110,6 +110,7 @@ private:
   void operator=(const vtkTriangleGridLocator&) = delete;
 
   std::unique_ptr<art::Accelerator> Engine;
+  double Origin[3] = { 0, 0, 0 }; // the engine's coordinates are taken from here (far scenes)
 };
 
 #endif

@@ -4,6 +4,7 @@ import sys
 
 import adaptivert
 from vtkmodules.vtkCommonCore import reference, vtkIdList, vtkPoints
+from vtkmodules.vtkCommonExecutionModel import vtkAlgorithm
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 
 R = 2.0
@@ -62,5 +63,29 @@ for kind in (adaptivert.vtkTriangleGridLocator.UNIFORM_GRID,
     assert loc.IntersectWithLine([10, 10, 10], [11, 10, 10], 0.0, reference(0.0), [0, 0, 0], [0, 0, 0],
                                  reference(0), cell) == 0
     assert int(cell) == -1
+
+# The same sphere 2.5e7 units out (survey coordinates, double points): the engine stores floats,
+# so it takes the scene's coordinates from its centre; hits keep their distances.
+far = vtkSphereSource()
+far.SetRadius(R)
+C = (2.5e7 + 0.7, -1.0e7 + 0.3, 4.0e6 + 0.1)
+far.SetCenter(*C)
+far.SetThetaResolution(96)
+far.SetPhiResolution(96)
+far.SetOutputPointsPrecision(vtkAlgorithm.DOUBLE_PRECISION)
+far.Update()
+loc = adaptivert.vtkTriangleGridLocator()
+loc.SetDataSet(far.GetOutput())
+loc.BuildLocator()
+assert loc.GetNumberOfTriangles() == far.GetOutput().GetNumberOfCells(), loc.GetNumberOfTriangles()
+u = [0.6, -0.48, 0.64]  # unit, off the axes
+p1 = [C[k] + 10 * u[k] for k in range(3)]
+p2 = [C[k] - 10 * u[k] for k in range(3)]
+t = reference(0.0)
+x = [0.0, 0.0, 0.0]
+assert loc.IntersectWithLine(p1, p2, 0.0, t, x, [0.0, 0.0, 0.0], reference(0), reference(0)) == 1
+dist = float(t) * 20.0
+assert 10 - R <= dist <= 10 - R + sag + 1e-6, dist
+assert abs(math.dist(x, C) - R) <= sag + 1e-6, math.dist(x, C)
 
 print("ok", file=sys.stderr)
