@@ -137,6 +137,12 @@ int Run(const cli::Options& o, const std::string& input)
     {
       throw art::Error("volume has no scalars", input);
     }
+    if (const int nc = volume->GetPointData()->GetScalars()->GetNumberOfComponents(); nc != 1)
+    {
+      throw art::Error("the scalars have " + std::to_string(nc) +
+          " components; rendering needs one (pick a one-component array with --array, or extract a component)",
+        input);
+    }
     volume->GetPointData()->GetScalars()->GetRange(range);
     settings = MakeSettings(o, MakeTF(o, range[0], range[1]));
     if (!o.Flag("reference"))

@@ -13,6 +13,8 @@
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkExecutive.h>
 #include <vtkImageData.h>
 #include <vtkMetaImageReader.h>
@@ -219,6 +221,31 @@ void SelectScalars(vtkPointData* pd, const std::string& name, const std::string&
     }
   }
 }
+
+// NIfTI stores values as slope * stored + intercept (a CT in Hounsfield units is often uint16 with
+// intercept -1024); vtkNIFTIImageReader reports the pair but leaves the voxels as stored.
+void ApplyRescale(vtkImageData* img, double slope, double intercept)
+{
+  vtkDataArray* in = img->GetPointData()->GetScalars();
+  if (!in || slope == 0 || (slope == 1 && intercept == 0))
+  {
+    return;
+  }
+  // Float holds 16-bit values scaled exactly enough; wider types keep double.
+  vtkSmartPointer<vtkDataArray> out = in->GetDataTypeSize() <= 2 ? vtkSmartPointer<vtkDataArray>(vtkSmartPointer<vtkFloatArray>::New())
+                                                                  : vtkSmartPointer<vtkDataArray>(vtkSmartPointer<vtkDoubleArray>::New());
+  out->SetName(in->GetName());
+  out->SetNumberOfComponents(in->GetNumberOfComponents());
+  out->SetNumberOfTuples(in->GetNumberOfTuples());
+  for (vtkIdType t = 0; t < in->GetNumberOfTuples(); ++t)
+  {
+    for (int c = 0; c < in->GetNumberOfComponents(); ++c)
+    {
+      out->SetComponent(t, c, slope * in->GetComponent(t, c) + intercept);
+    }
+  }
+  img->GetPointData()->SetScalars(out);
+}
 } // namespace
 
 const char* KindName(DataKind k)
@@ -314,6 +341,10 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   auto img = vtkSmartPointer<vtkImageData>::New();
   img->ShallowCopy(reader->GetOutputDataObject(0));
   SelectScalars(img->GetPointData(), array, path);
+  if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(reader))
+  {
+    ApplyRescale(img, nifti->GetRescaleSlope(), nifti->GetRescaleIntercept());
+  }
   int dims[3];
   img->GetDimensions(dims);
   if (dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0 || !img->GetPointData()->GetScalars())

@@ -584,6 +584,12 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
       *note += std::string(note->empty() ? "" : "; ") + "cell scalars '" + name + "' were averaged to the points";
     }
   }
+  if (s->GetNumberOfComponents() != 1)
+  {
+    throw Error("point array '" + std::string(s->GetName() ? s->GetName() : "") + "' has " +
+        std::to_string(s->GetNumberOfComponents()) + " components; rendering needs one (pick another with --array)",
+      file);
+  }
   const vtkIdType np = ug->GetNumberOfPoints();
   std::vector<Vec3> pts(np);
   std::vector<double> val(np);

@@ -116,6 +116,27 @@ TEST(Formats, MetaImageVtiNifti)
   ExpectSameVolume(img, art::LoadVolume(Dir() + "/v.nii.gz"), false);
 }
 
+// NIfTI's scl_slope / scl_inter are applied (a CT stored as uint16 with intercept -1024 loads in
+// Hounsfield units), as the file says the values are.
+TEST(Formats, NiftiRescaleSlopeAndIntercept)
+{
+  auto img = SmallVolume();
+  vtkNew<vtkNIFTIImageWriter> w;
+  w->SetInputData(img);
+  w->SetFileName((Dir() + "/scaled.nii").c_str());
+  w->SetRescaleSlope(2.0);
+  w->SetRescaleIntercept(-1024.0);
+  w->Write();
+  auto back = art::LoadVolume(Dir() + "/scaled.nii");
+  vtkDataArray* a = img->GetPointData()->GetScalars();
+  vtkDataArray* b = back->GetPointData()->GetScalars();
+  ASSERT_EQ(a->GetNumberOfTuples(), b->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    ASSERT_EQ(b->GetTuple1(i), 2.0 * a->GetTuple1(i) - 1024.0) << "voxel " << i;
+  }
+}
+
 TEST(Formats, MetaImageHeaderWithSeparateRaw)
 {
   auto img = SmallVolume();
