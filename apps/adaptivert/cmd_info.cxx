@@ -99,6 +99,10 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
     Out(text, "  bounds       %s\n", Bounds(img).c_str());
     Out(text, "  scalars      %s, %d component%s, range %g .. %g\n", s->GetDataTypeAsString(),
       s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "", r[0], r[1]);
+    if (img->GetPointData()->GetNumberOfArrays() > 1)
+    {
+      Out(text, "  point data   %s (--array picks one)\n", ArrayList(img->GetPointData()).c_str());
+    }
     j.Set("dimensions", std::vector<double>{ double(d[0]), double(d[1]), double(d[2]) })
       .Set("spacing", std::vector<double>(sp, sp + 3))
       .Set("origin", std::vector<double>(o, o + 3))
