@@ -45,7 +45,8 @@ void Declare(cli::Options& o)
 {
   o.Add("array", 0, "NAME", "point array to reduce (default: the active scalars)");
   o.Add("tets", 't', "N", "stop at N tetrahedra (or N% of the voxel count)");
-  o.Add("max-error", 'e', "E", "stop when the error is at most E data units (E% of the scalar range)");
+  o.Add("max-error", 'e', "E",
+    "stop when the error (opacity-weighted with --tf) is at most E data units (E% of the scalar range)");
   o.Add("metric", 0, "rms|max", "which error --max-error bounds", "rms");
   o.Add("levels", 0, "LIST", "also write nested levels from the same run, e.g. 0.01%,0.1%,5000: OUT_<n>.vtu");
   o.Add("refine-fraction", 0, "F", "tet growth per refinement level", "0.2");

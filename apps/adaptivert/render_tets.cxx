@@ -55,7 +55,9 @@ void Declare(cli::Options& o)
   o.Add("integrator", 0, "RULE", "segment rule: exact or trapezoid (the paper's)", "exact");
   o.Add("mip", 0, "", "maximum-intensity projection instead of emission-absorption");
   o.Add("tets", 0, "N", "reduce a volume to about N adaptive tets first (or N% of the voxel count)");
-  o.Add("max-error", 0, "E", "reduce a volume until the RMS error is at most E data units (E% of the scalar range)");
+  o.Add("max-error", 0, "E",
+    "reduce a volume until the RMS error (opacity-weighted unless --plain-reduction) is at most E data units "
+    "(E% of the scalar range)");
   o.Add("plain-reduction", 0, "",
     "reduce in plain L2, not weighted by the transfer function's opacity (a few times faster on large volumes)");
   o.Add("reference", 0, "", "render the full-resolution voxel reference instead");
