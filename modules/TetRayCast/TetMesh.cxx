@@ -415,12 +415,13 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
   }
   std::vector<Vec3> pts(np);
   std::vector<double> val(np);
+  const int* e = image->GetExtent(); // indices start at the extent's first corner
   for (int k = 0, id = 0; k < d[2]; ++k)
     for (int j = 0; j < d[1]; ++j)
       for (int i = 0; i < d[0]; ++i, ++id)
       {
         double p[3];
-        image->TransformContinuousIndexToPhysicalPoint(i, j, k, p); // origin, spacing and direction
+        image->TransformContinuousIndexToPhysicalPoint(e[0] + i, e[2] + j, e[4] + k, p); // origin, spacing, direction
         pts[id] = Vec3(p);
         val[id] = s->GetComponent(id, 0);
       }

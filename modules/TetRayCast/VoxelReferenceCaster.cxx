@@ -37,8 +37,11 @@ VoxelReferenceCaster VoxelReferenceCaster::FromVTK(vtkImageData* image, Transfer
   int d[3];
   double o[3], h[3];
   image->GetDimensions(d);
-  image->GetOrigin(o);
   image->GetSpacing(h);
+  // The caster's origin is the first voxel's position (an extent need not start at 0); the
+  // direction then turns the axes about it.
+  const int* e = image->GetExtent();
+  image->TransformContinuousIndexToPhysicalPoint(e[0], e[2], e[4], o);
   std::vector<double> v(s->GetNumberOfTuples());
   for (std::size_t i = 0; i < v.size(); ++i)
   {

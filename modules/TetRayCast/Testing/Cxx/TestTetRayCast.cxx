@@ -425,3 +425,52 @@ TEST(VoxelReference, DirectionMatrixMatchesTheTurnedVolume)
   EXPECT_LT(refDiff, 1e-6);
   EXPECT_LT(tetDiff, 1e-5);
 }
+
+// An image whose extent starts at (20, -3, 5) sits where its first voxel is: it renders exactly like
+// the same voxels with extent 0 and the origin moved there (tets and reference alike).
+TEST(VoxelReference, ExtentStartMatchesAMovedOrigin)
+{
+  const int n[3] = { 7, 6, 5 }, e0[3] = { 20, -3, 5 };
+  const double h = 0.5;
+  vtkNew<vtkImageData> a, b;
+  a->SetExtent(e0[0], e0[0] + n[0] - 1, e0[1], e0[1] + n[1] - 1, e0[2], e0[2] + n[2] - 1);
+  b->SetDimensions(n[0], n[1], n[2]);
+  for (vtkImageData* img : { a.GetPointer(), b.GetPointer() })
+  {
+    img->SetSpacing(h, h, h);
+  }
+  a->SetOrigin(1, 2, 3);
+  b->SetOrigin(1 + e0[0] * h, 2 + e0[1] * h, 3 + e0[2] * h);
+  vtkNew<vtkDoubleArray> s;
+  s->SetNumberOfTuples(n[0] * n[1] * n[2]);
+  for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
+  {
+    s->SetValue(i, double((i * 7) % 13));
+  }
+  a->GetPointData()->SetScalars(s);
+  b->GetPointData()->SetScalars(s);
+  const TransferFunction tf({ { 0, { 1, 0.5, 0 }, 0.0, 0 }, { 13, { 0, 0.5, 1 }, 0.9, 0 } }, 1.0);
+  const TetMesh ma = TetMesh::FromImage(a), mb = TetMesh::FromImage(b);
+  double ba[6];
+  a->GetBounds(ba);
+  const Camera cam = ViewOf(Box3::FromBounds(ba), 40, 32, 25, 15);
+  RenderSettings rs;
+  rs.tf = tf;
+  Image ia, ib, ra, rb;
+  TetRayCaster(ma, rs).Render(cam, ia);
+  TetRayCaster(mb, rs).Render(cam, ib);
+  VoxelReferenceCaster::FromVTK(a, tf).Render(cam, ra);
+  VoxelReferenceCaster::FromVTK(b, tf).Render(cam, rb);
+  double alpha = 0;
+  for (int y = 0; y < cam.Height(); ++y)
+    for (int x = 0; x < cam.Width(); ++x)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        ASSERT_NEAR(ia.Pixel(x, y)[c], ib.Pixel(x, y)[c], 1e-7) << x << "," << y;
+        ASSERT_NEAR(ra.Pixel(x, y)[c], rb.Pixel(x, y)[c], 1e-7) << x << "," << y;
+      }
+      alpha += ib.Pixel(x, y)[3];
+    }
+  EXPECT_GT(alpha, 0.2 * cam.Width() * cam.Height()); // the volume fills the view
+}
