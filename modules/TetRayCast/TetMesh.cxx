@@ -512,45 +512,20 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
   {
     throw Error("mesh has no cells", file);
   }
+  // The scalars are chosen, and cell scalars averaged to the points, on the cells as given: after
+  // tetrahedralising, a cell's weight at a corner would depend on how many tets it became.
   vtkSmartPointer<vtkUnstructuredGrid> ug = grid;
-  bool allTets = true;
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells() && allTets; ++c)
-  {
-    allTets = grid->GetCellType(c) == VTK_TETRA;
-  }
-  if (!allTets)
-  {
-    vtkNew<vtkDataSetTriangleFilter> tri;
-    tri->SetInputData(grid);
-    tri->TetrahedraOnlyOn();
-    tri->Update();
-    ug = tri->GetOutput();
-    if (note)
-    {
-      *note = "non-tetrahedral cells were tetrahedralised (" + std::to_string(grid->GetNumberOfCells()) +
-        " cells -> " + std::to_string(ug->GetNumberOfCells()) + " tets)";
-    }
-    if (ug->GetNumberOfCells() == 0)
-    {
-      throw Error("mesh has no 3D cells to tetrahedralise", file);
-    }
-  }
+  std::string notes;
   vtkDataArray* s = array.empty() ? ug->GetPointData()->GetScalars() : ug->GetPointData()->GetArray(array.c_str());
-  if (!s && array.empty())
+  for (int i = 0; i < ug->GetPointData()->GetNumberOfArrays() && !s && array.empty(); ++i)
   {
-    for (int i = 0; i < ug->GetPointData()->GetNumberOfArrays() && !s; ++i)
-    {
-      vtkDataArray* a = ug->GetPointData()->GetArray(i);
-      if (a && a->GetNumberOfComponents() == 1)
-      {
-        s = a;
-      }
-    }
+    vtkDataArray* a = ug->GetPointData()->GetArray(i);
+    s = a && a->GetNumberOfComponents() == 1 ? a : nullptr;
   }
   if (!s)
   {
-    // Cell scalars (common in simulation output) are averaged to the points, as VTK's
-    // vtkCellDataToPointData does, since the walk interpolates linearly inside each tet.
+    // Cell scalars (common in simulation output) are averaged to the points by VTK's
+    // vtkCellDataToPointData, since the walk interpolates linearly inside each tet.
     vtkCellData* cd = ug->GetCellData();
     vtkDataArray* cs = array.empty() ? cd->GetScalars() : cd->GetArray(array.c_str());
     for (int i = 0; i < cd->GetNumberOfArrays() && !cs && array.empty(); ++i)
@@ -567,9 +542,15 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
           names += (names.empty() ? "" : ", ") + std::string(fd->GetArrayName(i) ? fd->GetArrayName(i) : "(unnamed)");
         }
       }
-      throw Error(array.empty() ? "mesh has no point scalars"
+      throw Error(array.empty() ? "mesh has no point or cell scalars"
                                 : "mesh has no point or cell array '" + array + "' (it has: " +
             (names.empty() ? std::string("none") : names) + ")",
+        file);
+    }
+    if (cs->GetNumberOfComponents() != 1)
+    {
+      throw Error("cell array '" + std::string(cs->GetName()) + "' has " + std::to_string(cs->GetNumberOfComponents()) +
+          " components; rendering needs one (pick another with --array)",
         file);
     }
     vtkNew<vtkCellDataToPointData> toPoints;
@@ -580,16 +561,41 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     const std::string name = cs->GetName();
     ug = vtkUnstructuredGrid::SafeDownCast(toPoints->GetOutput());
     s = ug->GetPointData()->GetArray(name.c_str());
-    if (note)
-    {
-      *note += std::string(note->empty() ? "" : "; ") + "cell scalars '" + name + "' were averaged to the points";
-    }
+    notes = "cell scalars '" + name + "' were averaged to the points";
   }
   if (s->GetNumberOfComponents() != 1)
   {
     throw Error("point array '" + std::string(s->GetName() ? s->GetName() : "") + "' has " +
         std::to_string(s->GetNumberOfComponents()) + " components; rendering needs one (pick another with --array)",
       file);
+  }
+  bool allTets = true;
+  for (vtkIdType c = 0; c < ug->GetNumberOfCells() && allTets; ++c)
+  {
+    allTets = ug->GetCellType(c) == VTK_TETRA;
+  }
+  if (!allTets)
+  {
+    // The chosen array rides through as the active scalars.
+    auto withScalars = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    withScalars->ShallowCopy(ug);
+    withScalars->GetPointData()->SetScalars(s);
+    vtkNew<vtkDataSetTriangleFilter> tri;
+    tri->SetInputData(withScalars);
+    tri->TetrahedraOnlyOn();
+    tri->Update();
+    ug = tri->GetOutput();
+    notes = "non-tetrahedral cells were tetrahedralised (" + std::to_string(grid->GetNumberOfCells()) + " cells -> " +
+      std::to_string(ug->GetNumberOfCells()) + " tets)" + (notes.empty() ? "" : "; " + notes);
+    if (ug->GetNumberOfCells() == 0)
+    {
+      throw Error("mesh has no 3D cells to tetrahedralise", file);
+    }
+    s = ug->GetPointData()->GetScalars();
+  }
+  if (note)
+  {
+    *note += std::string(note->empty() || notes.empty() ? "" : "; ") + notes;
   }
   const vtkIdType np = ug->GetNumberOfPoints();
   std::vector<Vec3> pts(np);

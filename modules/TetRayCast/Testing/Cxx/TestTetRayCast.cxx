@@ -474,3 +474,40 @@ TEST(VoxelReference, ExtentStartMatchesAMovedOrigin)
     }
   EXPECT_GT(alpha, 0.2 * cam.Width() * cam.Height()); // the volume fills the view
 }
+
+// Cell scalars of hexahedra are averaged to the points on the hexahedra, as vtkCellDataToPointData
+// gives them, not on the tets they are split into (which would weigh a cell by its tet count).
+TEST(TetMesh, CellScalarsAveragedBeforeTetrahedralising)
+{
+  vtkNew<vtkUnstructuredGrid> ug;
+  vtkNew<vtkPoints> pts;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i)
+        pts->InsertNextPoint(i, j, k);
+  ug->SetPoints(pts);
+  auto id = [](int i, int j, int k) { return vtkIdType(i + 3 * (j + 2 * k)); };
+  for (int c = 0; c < 2; ++c)
+  {
+    const vtkIdType h[8] = { id(c, 0, 0), id(c + 1, 0, 0), id(c + 1, 1, 0), id(c, 1, 0), id(c, 0, 1), id(c + 1, 0, 1),
+      id(c + 1, 1, 1), id(c, 1, 1) };
+    ug->InsertNextCell(VTK_HEXAHEDRON, 8, h);
+  }
+  vtkNew<vtkDoubleArray> v;
+  v->SetName("phase");
+  v->InsertNextValue(0.0);
+  v->InsertNextValue(1.0);
+  ug->GetCellData()->SetScalars(v);
+  std::string note;
+  const TetMesh m = TetMesh::FromVTK(ug, {}, &note);
+  EXPECT_NE(note.find("tetrahedralised"), std::string::npos) << note;
+  EXPECT_NE(note.find("cell scalars 'phase' were averaged"), std::string::npos) << note;
+  int middle = 0;
+  for (std::size_t p = 0; p < m.PointsArray().size(); ++p)
+  {
+    const double x = m.PointsArray()[p].x;
+    EXPECT_DOUBLE_EQ(m.Scalars()[p], x == 0 ? 0.0 : (x == 1 ? 0.5 : 1.0)) << "point at x = " << x;
+    middle += x == 1 ? 1 : 0;
+  }
+  EXPECT_EQ(middle, 4);
+}
