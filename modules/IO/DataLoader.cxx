@@ -34,6 +34,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -223,11 +224,13 @@ void SelectScalars(vtkPointData* pd, const std::string& name, const std::string&
 }
 
 // NIfTI stores values as slope * stored + intercept (a CT in Hounsfield units is often uint16 with
-// intercept -1024); vtkNIFTIImageReader reports the pair but leaves the voxels as stored.
+// intercept -1024); vtkNIFTIImageReader reports the pair but leaves the voxels as stored (unlike
+// vtkDICOMImageReader, which applies its own). A zero or non-finite slope means no scaling, as in
+// nifti1_io.
 void ApplyRescale(vtkImageData* img, double slope, double intercept)
 {
   vtkDataArray* in = img->GetPointData()->GetScalars();
-  if (!in || slope == 0 || (slope == 1 && intercept == 0))
+  if (!in || slope == 0 || !std::isfinite(slope) || !std::isfinite(intercept) || (slope == 1 && intercept == 0))
   {
     return;
   }

@@ -30,6 +30,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 namespace fs = std::filesystem;
 
@@ -117,7 +118,7 @@ TEST(Formats, MetaImageVtiNifti)
 }
 
 // NIfTI's scl_slope / scl_inter are applied (a CT stored as uint16 with intercept -1024 loads in
-// Hounsfield units), as the file says the values are.
+// Hounsfield units), as the file says the values are; a NaN slope means none.
 TEST(Formats, NiftiRescaleSlopeAndIntercept)
 {
   auto img = SmallVolume();
@@ -134,6 +135,18 @@ TEST(Formats, NiftiRescaleSlopeAndIntercept)
   for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
   {
     ASSERT_EQ(b->GetTuple1(i), 2.0 * a->GetTuple1(i) - 1024.0) << "voxel " << i;
+  }
+  // A NaN scl_slope (header bytes 112-115) means no scaling, as nifti1_io reads it.
+  std::fstream f(Dir() + "/scaled.nii", std::ios::in | std::ios::out | std::ios::binary);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  f.seekp(112);
+  f.write(reinterpret_cast<const char*>(&nan), sizeof nan);
+  f.close();
+  auto unscaled = art::LoadVolume(Dir() + "/scaled.nii");
+  vtkDataArray* c = unscaled->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    ASSERT_EQ(c->GetTuple1(i), a->GetTuple1(i)) << "voxel " << i;
   }
 }
 
