@@ -183,7 +183,7 @@ int Run(const cli::Options& o)
   // The reference: voxels, trilinear, 2 samples per voxel, exact steps, no early termination.
   std::fprintf(stderr, "reference (voxel caster) ...\n");
   art::Image refRaw;
-  const auto refCaster = art::VoxelReferenceCaster::FromVTK(volume, tf);
+  const auto refCaster = art::VoxelReferenceCaster::FromVTK(volume, tf, in);
   const art::RenderStats refStats = refCaster.Render(camera, refRaw);
   const art::Image ref = OverBlack(refRaw);
   art::WriteImage(ref, dir + "/tets-reference.png");

@@ -240,7 +240,7 @@ int Run(const cli::Options& o, const std::string& input)
     {
       throw art::Error("--reference needs a voxel volume", input);
     }
-    auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf);
+    auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf, input);
     rc.SetMaxIntensity(settings.mode == art::RenderSettings::Mode::MaxIntensity);
     rc.SetIsoSurfaces(settings.isos, settings.ambient, settings.diffuse);
     st = rc.Render(cam, img, &progress);
@@ -253,7 +253,7 @@ int Run(const cli::Options& o, const std::string& input)
     {
       if (volume)
       {
-        auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf);
+        auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf, input);
         rc.SetMaxIntensity(settings.mode == art::RenderSettings::Mode::MaxIntensity);
         rc.SetIsoSurfaces(settings.isos, settings.ambient, settings.diffuse);
         rst = rc.Render(cam, ref, &progress);

@@ -443,7 +443,14 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
           tets.push_back({ c[t[0] ^ flip], c[t[1] ^ flip], c[t[2] ^ flip], c[t[3] ^ flip] });
         }
       }
-  return TetMesh(std::move(pts), std::move(val), std::move(tets));
+  try
+  {
+    return TetMesh(std::move(pts), std::move(val), std::move(tets));
+  }
+  catch (const Error& e)
+  {
+    throw Error(e.problem(), file);
+  }
 }
 
 namespace

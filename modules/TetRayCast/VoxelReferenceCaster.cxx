@@ -27,12 +27,12 @@ VoxelReferenceCaster::VoxelReferenceCaster(std::vector<double> values, const int
   Box = Box3(O, O + Vec3((D[0] - 1) * H.x, (D[1] - 1) * H.y, (D[2] - 1) * H.z));
 }
 
-VoxelReferenceCaster VoxelReferenceCaster::FromVTK(vtkImageData* image, TransferFunction tf)
+VoxelReferenceCaster VoxelReferenceCaster::FromVTK(vtkImageData* image, TransferFunction tf, const std::string& file)
 {
   vtkDataArray* s = image ? image->GetPointData()->GetScalars() : nullptr;
   if (!s)
   {
-    throw Error("volume has no point scalars");
+    throw Error("volume has no point scalars", file);
   }
   int d[3];
   double o[3], h[3];
@@ -47,12 +47,19 @@ VoxelReferenceCaster VoxelReferenceCaster::FromVTK(vtkImageData* image, Transfer
   {
     v[i] = s->GetComponent(static_cast<vtkIdType>(i), 0);
   }
-  VoxelReferenceCaster rc(std::move(v), d, Vec3(o), Vec3(h), std::move(tf));
-  if (vtkMatrix3x3* m = image->GetDirectionMatrix())
+  try
   {
-    rc.SetDirection(m->GetData());
+    VoxelReferenceCaster rc(std::move(v), d, Vec3(o), Vec3(h), std::move(tf));
+    if (vtkMatrix3x3* m = image->GetDirectionMatrix())
+    {
+      rc.SetDirection(m->GetData());
+    }
+    return rc;
   }
-  return rc;
+  catch (const Error& e)
+  {
+    throw Error(e.problem(), file);
+  }
 }
 
 void VoxelReferenceCaster::SetDirection(const double r[9])

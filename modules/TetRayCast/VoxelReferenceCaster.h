@@ -12,6 +12,7 @@
 #include "TetRayCaster.h"
 #include "TransferFunction.h"
 
+#include <string>
 #include <vector>
 
 class vtkImageData;
@@ -25,7 +26,7 @@ public:
   VoxelReferenceCaster(std::vector<double> values, const int dims[3], const Vec3& origin, const Vec3& spacing,
     TransferFunction tf);
   /// Honours the image's direction matrix (which must be a rotation, possibly with reflection).
-  static VoxelReferenceCaster FromVTK(vtkImageData* image, TransferFunction tf);
+  static VoxelReferenceCaster FromVTK(vtkImageData* image, TransferFunction tf, const std::string& file = {});
   /// Index axes in world coordinates: world = origin + R (i h0, j h1, k h2), R row-major and
   /// orthonormal (throws art::Error otherwise). Identity by default.
   void SetDirection(const double r[9]);
