@@ -11,11 +11,17 @@ long long ParseBudget(const std::string& s, long long voxels, const std::string&
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
   const bool pct = end && *end == '%' && end[1] == 0;
-  if (s.empty() || !end || (*end && !pct) || !(v > 0) || !std::isfinite(v))
+  if (s.empty() || !end || end == s.c_str() || (*end && !pct) || !(v > 0) || !std::isfinite(v))
   {
     throw UsageError(what + " wants a positive number or a percentage, got '" + s + "'");
   }
-  return pct ? std::llround(v / 100.0 * voxels) : std::llround(v);
+  const double n = pct ? v / 100.0 * voxels : v;
+  if (!(n >= 0.5 && n < 1e15))
+  {
+    throw UsageError(what + " '" + s + "' is " + (n < 0.5 ? "less than one tet" : "beyond any mesh") +
+      " (a count from 6 to 1e15, or a percentage of the voxel count)");
+  }
+  return std::llround(n);
 }
 
 double ParseMaxError(const std::string& s, bool& relative)
@@ -23,7 +29,8 @@ double ParseMaxError(const std::string& s, bool& relative)
   relative = !s.empty() && s.back() == '%';
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || (end && *end && !(relative && end[1] == 0 && *end == '%')) || !(v >= 0) || !std::isfinite(v))
+  if (s.empty() || end == s.c_str() || (end && *end && !(relative && end[1] == 0 && *end == '%')) || !(v >= 0) ||
+    !std::isfinite(v))
   {
     throw UsageError("--max-error wants a number or a percentage, got '" + s + "'");
   }

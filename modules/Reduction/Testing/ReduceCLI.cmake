@@ -32,6 +32,8 @@ art_reduce_cli_test(reduce_no_target EXIT 2 STDERR "give --tets N or --max-error
   ARGS reduce "${_ct}" "${_out}/x.vtu")
 art_reduce_cli_test(reduce_bad_budget EXIT 2 STDERR "--tets wants a positive number" ONE_LINE_STDERR
   ARGS reduce "${_ct}" "${_out}/x.vtu" --tets lots)
+art_reduce_cli_test(reduce_budget_out_of_range EXIT 2 STDERR "--tets '1e300' is beyond any mesh" ONE_LINE_STDERR
+  ARGS reduce "${_ct}" "${_out}/x.vtu" --tets 1e300)
 art_reduce_cli_test(reduce_bad_output EXIT 2 STDERR "output must be a .vtu" ONE_LINE_STDERR
   ARGS reduce "${_ct}" "${_out}/x.png" --tets 100)
 art_reduce_cli_test(reduce_missing_file EXIT 1 STDERR "nonexistent.mha: no such file" ONE_LINE_STDERR
