@@ -35,6 +35,7 @@ struct TetRayCaster::Impl
     const RenderSettings& S = rc.S;
     const bool mip = S.mode == RenderSettings::Mode::MaxIntensity;
     const double dirLen = Length(r.dir);
+    const double tMargin = 1e-9 * M.Bounds().Diagonal() / dirLen;
     const Vec3 view = r.dir / dirLen;
     RayAccum acc;
     double tDone = -1e300;
@@ -145,8 +146,9 @@ struct TetRayCaster::Impl
       }
       // An entry before the last piece's exit lies inside that piece (a duplicate at an edge).
       // One at the exit itself is the next piece behind a coincident face (whose t, from other
-      // vertex ids, may differ in the last bits), so the test leaves it a margin.
-      if (e.x.t < tDone - 1e-9 * std::max(1.0, std::fabs(tDone)))
+      // vertex ids, may differ in the last bits), so the test leaves it a margin: 1e-9 of the
+      // mesh's size, in the ray's t.
+      if (e.x.t < tDone - tMargin)
       {
         continue;
       }

@@ -128,6 +128,7 @@ void WalkFacesWith(const TetMesh& M, const Geo& g, int t, int entryFace, FaceCro
         }
       }
       nudges += proper ? 0 : 1;
+      x = x < 3 ? x : 0; // every product NaN (coordinates near 1e150): any face, never past the tables
       face(x, e);
     }
     // The exit face as (u, w, d): (c b d), (a c d) or (b a d); u <- e[1], w <- e[2], d <- e[0];
