@@ -123,7 +123,7 @@ void OpacityImportance::Prepare(const VoxelVolume& vol, double floor, int radius
   ForEachRange(static_cast<long long>(W0.size()), 4096, [&](long long i0, long long i1, Counters&) {
     for (long long i = i0; i < i1; ++i)
     {
-      W0[i] = Scaled(MaxSlope(Lo[i], Hi[i]));
+      W0[i] = static_cast<float>(Scaled(MaxSlope(Lo[i], Hi[i])));
     }
   });
 }

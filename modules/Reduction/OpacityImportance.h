@@ -70,7 +70,7 @@ private:
 
   std::vector<std::pair<double, double>> N;
   std::vector<float> Lo, Hi;
-  std::vector<double> W0; ///< Weight with the fit inside [Lo, Hi]
+  std::vector<float> W0; ///< Weight with the fit inside [Lo, Hi] (float, as Lo and Hi: 4 bytes a voxel)
   double Fl = 1, GMax = 0;
 };
 } // namespace art
