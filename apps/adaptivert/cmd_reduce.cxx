@@ -177,8 +177,8 @@ int Run(const cli::Options& o)
         last ? "output" : "level", file.c_str(), Grouped(m.NumberOfTets()).c_str(),
         Grouped(m.NumberOfVertices()).c_str(), m.Rms, m.Rms * pct, m.Max, m.Max * pct, m.BuildSeconds,
         m.TargetReached ? ""
-        : m.TargetTets > 0 ? " (tet budget not reached: nothing left to refine)"
-                           : " (error bound not reached: nothing left to refine)");
+        : m.TargetTets > 0 ? " (tet budget not reached: no finer tets than the voxels allow)"
+                           : " (error bound not reached: no finer tets than the voxels allow)");
     }
   }
   const auto& f = meshes.back();

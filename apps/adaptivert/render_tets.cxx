@@ -188,7 +188,7 @@ int Run(const cli::Options& o, const std::string& input)
         {
           ss << "; weighted RMS " << r.WeightedRms << ", max " << r.WeightedMax;
         }
-        ss << ")";
+        ss << (r.TargetReached ? ")" : "; target not reached: no finer tets than the voxels allow)");
         meshLabel = ss.str();
         j.Set("reduced_rms", r.Rms).Set("reduced_max", r.Max).Set("reduced_weighted", r.Weighted);
         if (r.Weighted)

@@ -25,9 +25,10 @@ long long ParseCount(const std::string& s, const std::string& what)
 std::string UsageText()
 {
   return "usage: adaptivert-view [options] FILE\n\n"
-         "Shows a volume (.mha .nii .vti .nrrd, DICOM folder), a tet mesh (.vtu .vtk) or a triangle\n"
-         "scene (.ply .obj .stl .vtp) in a window. Volumes are reduced to adaptive tets in the\n"
-         "background (nested levels from one run) and ray cast cell by cell (vtkTetRayCastMapper);\n"
+         "Shows a volume (.mha .nii .vti .nrrd, DICOM folder), a mesh (.vtu .vts .vtr) or a triangle\n"
+         "scene (.ply .obj .stl .vtp), or a legacy .vtk file of any of them, in a window. Volumes are\n"
+         "reduced to adaptive tets in the background (nested levels from one run) and ray cast cell\n"
+         "by cell (vtkTetRayCastMapper);\n"
          "triangle scenes are ray traced through the TriangleGrid surface tracer.\n\n"
          "options:\n"
          "  --size WxH           window size in pixels (default 800x600)\n"

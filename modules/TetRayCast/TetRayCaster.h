@@ -50,8 +50,8 @@ struct RenderSettings
   std::vector<IsoSurface> isos;
   double ambient = 0.3, diffuse = 0.7; ///< headlight shading of iso-surfaces
   int tileSize = 16;
-  /// Non-convex meshes: entry faces from the TriangleGrid all-hits query over the boundary
-  /// triangles (true) or from testing every face in the pixel's screen bucket (false).
+  /// Non-convex meshes: entry faces from the boundary triangles in the TriangleGrid's voxels along
+  /// the ray (true) or from testing every face in the pixel's screen bucket (false).
   bool boundaryGrid = true;
   /// Walk the camera's rays in its projection (ProjectedWalker: 2-D side products) where it is
   /// valid, or always with the 3-D TetWalker (false).
