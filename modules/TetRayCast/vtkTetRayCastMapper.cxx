@@ -15,6 +15,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkRayCastImageDisplayHelper.h>
+#include <vtkCellData.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
@@ -37,6 +38,7 @@ struct vtkTetRayCastMapper::Internals
   std::unique_ptr<art::TetMesh> Mesh;
   vtkMTimeType MeshTime = 0;
   vtkDataSet* MeshInput = nullptr;
+  std::string MeshArray;
   std::vector<art::IsoSurface> Isos;
   vtkSmartPointer<vtkImageData> Last = vtkSmartPointer<vtkImageData>::New();
   std::vector<unsigned char> Bytes;
@@ -97,13 +99,26 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkErrorMacro("input must be a vtkUnstructuredGrid");
     return;
   }
-  // (Re)build the engine's arrays only when the data changed.
-  if (!this->Impl->Mesh || this->Impl->MeshInput != input || this->Impl->MeshTime < input->GetMTime())
+  // The array the usual vtkAbstractVolumeMapper settings select (SelectScalarArray with a field
+  // scalar mode); default: the active point scalars, else cell scalars (TetMesh::FromVTK).
+  std::string array;
+  if (this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA || this->ScalarMode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
+  {
+    vtkFieldData* fd = this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA
+      ? static_cast<vtkFieldData*>(grid->GetPointData())
+      : static_cast<vtkFieldData*>(grid->GetCellData());
+    const char* name = this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME ? this->ArrayName
+                                                                      : fd->GetArrayName(this->ArrayId);
+    array = name ? name : "";
+  }
+  // (Re)build the engine's arrays only when the data or the array changed.
+  if (!this->Impl->Mesh || this->Impl->MeshInput != input || this->Impl->MeshTime < input->GetMTime() ||
+    this->Impl->MeshArray != array)
   {
     try
     {
       std::string note;
-      this->Impl->Mesh = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(grid, {}, &note));
+      this->Impl->Mesh = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(grid, array, &note));
       if (!note.empty())
       {
         vtkWarningMacro(<< note);
@@ -117,6 +132,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
     this->Impl->MeshInput = input;
     this->Impl->MeshTime = input->GetMTime();
+    this->Impl->MeshArray = array;
   }
   art::RenderSettings s;
   try

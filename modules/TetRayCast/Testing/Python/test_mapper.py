@@ -126,6 +126,23 @@ print(f"rotated and scaled volume and camera: max difference {np.abs(turned - en
 assert np.abs(turned - engine).max() < 1e-4
 place((0, 0, 0), (0, 0, 0), 1, lambda p: p, up0)
 
+# SelectScalarArray with a field scalar mode picks another point array, as VTK's mappers do: a
+# copy of the scalars with its values mirrored about the range changes the image, and selecting
+# the original array by name gives the first image back.
+rt = grid.GetPointData().GetScalars()
+lo, hi = rt.GetRange()
+mirrored = vtk_to_numpy(rt).astype(float)
+from vtkmodules.util.numpy_support import numpy_to_vtk
+flip = numpy_to_vtk(lo + hi - mirrored, deep=1)
+flip.SetName("mirrored")
+grid.GetPointData().AddArray(flip)
+mapper.SetScalarModeToUsePointFieldData()
+mapper.SelectScalarArray("mirrored")
+assert np.abs(engine_image() - engine).max() > 0.1, "the selected array did not change the image"
+mapper.SelectScalarArray(rt.GetName())
+assert np.abs(engine_image() - engine).max() < 1e-6, "selecting the original array by name"
+mapper.SetScalarModeToDefault()
+
 # Half the rays per axis with ImageSampleDistance 2; iso-surfaces add shaded surfaces.
 mapper.SetImageSampleDistance(2)
 mapper.AddIsoSurface(200, 1, 1, 1, 1.0)
