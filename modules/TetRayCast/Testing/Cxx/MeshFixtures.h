@@ -8,6 +8,7 @@
 #include "TetMesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -103,6 +104,25 @@ inline art::RayAccum BruteForce(const art::TetMesh& m, const art::TransferFuncti
       break;
   }
   return acc;
+}
+/// A smooth field for the stability tests.
+inline double Wavy(const Vec3& p)
+{
+  return 0.5 + 0.3 * std::sin(2.1 * p.x + 0.3) * std::cos(1.7 * p.y) + 0.2 * p.z;
+}
+
+/// A 5 x 5 x 4 grid (five tets a cell) with one layer of cells squashed to 1e-7 and the rest
+/// jittered: needles and slivers everywhere.
+inline art::TetMesh SliverMesh()
+{
+  auto warp = [](const Vec3& p) {
+    Vec3 q = p;
+    if (p.z > 1.01)
+      q.z = p.z - 0.5 + 1e-7;
+    q.x += 0.03 * std::sin(7 * p.y + 3 * p.z);
+    return q;
+  };
+  return GridMesh(5, 5, 4, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Wavy, 5, {}, warp);
 }
 } // namespace fixtures
 

@@ -14,7 +14,7 @@ using namespace art;
 
 namespace
 {
-double Wavy(const Vec3& p) { return 0.5 + 0.3 * std::sin(2.1 * p.x + 0.3) * std::cos(1.7 * p.y) + 0.2 * p.z; }
+using fixtures::Wavy;
 
 RenderSettings Settings()
 {
@@ -91,15 +91,7 @@ TEST(TetStability, RaysThroughVerticesEdgesAndFaces)
 
 TEST(TetStability, SliverTets)
 {
-  // Squash one layer of cells to 1e-7 and jitter the rest: needles and slivers everywhere.
-  auto warp = [](const Vec3& p) {
-    Vec3 q = p;
-    if (p.z > 1.01)
-      q.z = p.z - 0.5 + 1e-7;
-    q.x += 0.03 * std::sin(7 * p.y + 3 * p.z);
-    return q;
-  };
-  const TetMesh m = fixtures::GridMesh(5, 5, 4, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Wavy, 5, {}, warp);
+  const TetMesh m = fixtures::SliverMesh(); // needles and slivers everywhere
   const TetRayCaster rc(m, Settings());
   for (int i = 0; i < 200; ++i)
   {
