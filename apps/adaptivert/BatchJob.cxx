@@ -1,5 +1,7 @@
 #include "BatchJob.h"
+#include "DataLoader.h"
 #include "Error.h"
+#include "Render.h"
 
 #include <nlohmann/json.hpp>
 
@@ -28,8 +30,9 @@ std::string Scalar(const json& v)
   return v.dump(); // numbers print as in JSON
 }
 
-// {"tets": 20000, "exact": true} -> --tets 20000 --exact; false drops the flag.
-std::vector<std::string> OptionsToArgs(const json& s, std::string& text, const std::string& file)
+// {"tets": 20000, "exact": true} -> --tets 20000 --exact; false drops the flag, and so does a
+// setting only another kind of data takes (a job may hold volumes and triangle scenes alike).
+std::vector<std::string> OptionsToArgs(const json& s, std::string& text, const std::string& file, const art::DataKind* kind)
 {
   if (!s.is_object())
   {
@@ -38,6 +41,10 @@ std::vector<std::string> OptionsToArgs(const json& s, std::string& text, const s
   std::vector<std::string> args;
   for (const auto& [key, value] : s.items())
   {
+    if (kind && !cli::OptionAppliesTo(key, *kind))
+    {
+      continue;
+    }
     if (value.is_boolean())
     {
       if (value.get<bool>())
@@ -139,6 +146,17 @@ BatchJob LoadBatchJob(const std::string& path)
     {
       const std::string ds = (base / d.get<std::string>()).lexically_normal().string();
       const std::string stem = fs::path(ds).stem().string();
+      art::DataKind dsKind;
+      const art::DataKind* kind = nullptr;
+      try
+      {
+        dsKind = art::KindOf(ds);
+        kind = &dsKind;
+      }
+      catch (const art::Error&)
+      {
+        // a missing or unknown file fails its frames with the loader's own message
+      }
       for (size_t c = 0; c < cams.size(); ++c)
       {
         const std::vector<std::string> view = { "--size", size, "--azimuth",
@@ -151,7 +169,7 @@ BatchJob LoadBatchJob(const std::string& path)
           BatchTask r;
           r.name = refName = camName + "_reference";
           r.dataset = ds;
-          r.args = OptionsToArgs(j["reference"], r.setting, path);
+          r.args = OptionsToArgs(j["reference"], r.setting, path, kind);
           r.args.insert(r.args.begin(), view.begin(), view.end());
           r.isReference = true;
           r.camera = static_cast<int>(c);
@@ -162,7 +180,7 @@ BatchJob LoadBatchJob(const std::string& path)
           BatchTask t;
           t.name = camName + "_s" + Num("%02d", static_cast<int>(s));
           t.dataset = ds;
-          t.args = OptionsToArgs(settings[s], t.setting, path);
+          t.args = OptionsToArgs(settings[s], t.setting, path, kind);
           t.args.insert(t.args.begin(), view.begin(), view.end());
           t.reference = refName;
           t.camera = static_cast<int>(c);

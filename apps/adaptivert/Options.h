@@ -34,6 +34,8 @@ public:
   /// "WxH" into two positive ints.
   void GetSize(const std::string& name, int& w, int& h) const;
   const std::vector<std::string>& Positional() const { return Args; }
+  /// Names declared with Add, in order.
+  const std::vector<std::string>& Declared() const { return Order; }
 
   std::string Help() const;
 

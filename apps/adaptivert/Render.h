@@ -25,6 +25,10 @@ struct Renderer
 
 std::vector<Renderer>& Renderers();
 
+/// False when only other kinds' renderers declare --option (--tets for a surface, --opacity for a
+/// volume); `render` refuses such options, and batch jobs leave them out of those frames.
+bool OptionAppliesTo(const std::string& option, art::DataKind kind);
+
 struct RendererRegistrar
 {
   explicit RendererRegistrar(Renderer r) { Renderers().push_back(std::move(r)); }

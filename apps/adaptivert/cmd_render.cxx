@@ -7,6 +7,7 @@
 
 #include <vtkCamera.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -59,6 +60,29 @@ void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam)
   cam->SetParallelProjection(o.Flag("parallel"));
   art::Camera::Frame(cam, bounds, o.GetDouble("azimuth"), o.GetDouble("elevation"), Zoom(o));
 }
+bool OptionAppliesTo(const std::string& option, art::DataKind kind)
+{
+  bool declaredElsewhere = false;
+  for (const auto& r : Renderers())
+  {
+    Options declared;
+    if (r.declare)
+    {
+      r.declare(declared);
+    }
+    const auto& names = declared.Declared();
+    if (std::find(names.begin(), names.end(), option) == names.end())
+    {
+      continue;
+    }
+    if (std::find(r.kinds.begin(), r.kinds.end(), kind) != r.kinds.end())
+    {
+      return true;
+    }
+    declaredElsewhere = true;
+  }
+  return !declaredElsewhere;
+}
 } // namespace cli
 
 namespace
@@ -81,6 +105,27 @@ void Declare(cli::Options& o)
   }
 }
 
+// An option of another renderer (--tets on a triangle scene, --opacity on a volume) would be
+// ignored without a word: it is a usage error instead.
+void RefuseOthersOptions(const cli::Options& o, art::DataKind kind)
+{
+  for (const auto& r : cli::Renderers())
+  {
+    cli::Options declared;
+    if (r.declare)
+    {
+      r.declare(declared);
+    }
+    for (const std::string& name : declared.Declared())
+    {
+      if (o.Has(name) && !cli::OptionAppliesTo(name, kind))
+      {
+        throw cli::UsageError("--" + name + " does not apply to a " + art::KindName(kind));
+      }
+    }
+  }
+}
+
 int Run(const cli::Options& o)
 {
   if (o.Positional().size() != 1)
@@ -96,6 +141,7 @@ int Run(const cli::Options& o)
     {
       if (k == kind)
       {
+        RefuseOthersOptions(o, kind);
         return r.run(o, input);
       }
     }
