@@ -9,6 +9,8 @@
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMultiBlockDataSet.h>
@@ -24,6 +26,7 @@ vtkAdaptiveTetReducer::vtkAdaptiveTetReducer()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
+  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
 }
 
 vtkAdaptiveTetReducer::~vtkAdaptiveTetReducer()
@@ -130,8 +133,18 @@ int vtkAdaptiveTetReducer::RequestData(
   art::Progress progress([this](double f, const std::string&) { this->UpdateProgress(f); });
   try
   {
-    const art::VoxelVolume volume = art::VolumeFromImage(input);
-    vtkDataArray* s = input->GetPointData()->GetScalars();
+    // The array chosen with SetInputArrayToProcess (default: the point scalars).
+    vtkNew<vtkImageData> selected;
+    vtkImageData* image = input;
+    vtkDataArray* chosen = this->GetInputArrayToProcess(0, inputVector);
+    if (chosen && chosen != input->GetPointData()->GetScalars())
+    {
+      selected->ShallowCopy(input);
+      selected->GetPointData()->SetScalars(chosen);
+      image = selected;
+    }
+    const art::VoxelVolume volume = art::VolumeFromImage(image);
+    vtkDataArray* s = image->GetPointData()->GetScalars();
     const bool asDouble = s->GetDataType() == VTK_DOUBLE;
     const std::vector<art::ReducedMesh> meshes = art::TetReducer(opt).Run(volume, &progress);
     if (meshes.empty())

@@ -13,6 +13,8 @@
  * target_tets, target_error. Output port 1: a vtkMultiBlockDataSet holding one such grid per
  * level added with AddLevel (a nested series from one run, coarsest first) and the final grid.
  *
+ * The reduced array is the point scalars, or the one given with SetInputArrayToProcess(0, 0, 0,
+ * vtkDataObject::FIELD_ASSOCIATION_POINTS, name).
  * The input needs one scalar component and at least 2 voxels along each axis; any scalar type,
  * spacing, origin and direction. Progress events are fired between refinement levels.
  */

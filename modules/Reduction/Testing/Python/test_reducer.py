@@ -37,6 +37,20 @@ assert g.GetPointData().GetScalars().GetDataTypeAsString() == "double"
 assert r.GetRMSError() < 1e-9, r.GetRMSError()
 assert g.GetBounds() == ramp.GetBounds(), (g.GetBounds(), ramp.GetBounds())
 
+# SetInputArrayToProcess picks another point array: a second, curved array is reduced instead
+# (its name on the output, and no longer reproduced exactly by 24 tets).
+curved = vtkDoubleArray()
+curved.SetName("curved")
+curved.SetNumberOfTuples(ramp.GetNumberOfPoints())
+for i in range(ramp.GetNumberOfPoints()):
+    x, y, z = ramp.GetPoint(i)
+    curved.SetTuple1(i, x * x + y * z)
+ramp.GetPointData().AddArray(curved)
+r.SetInputArrayToProcess(0, 0, 0, 0, "curved")  # 0: vtkDataObject.FIELD_ASSOCIATION_POINTS
+r.Update()
+assert r.GetOutput().GetPointData().GetScalars().GetName() == "curved"
+assert r.GetRMSError() > 1e-3, r.GetRMSError()
+
 # A quadratic field over nested levels from one run; progress events fire.
 quad = image((30, 26, 22), lambda x, y, z: (x - 12) ** 2 + 0.5 * (y - 10) ** 2 + 2 * (z - 7) ** 2,
              vtkShortArray, "quad")
