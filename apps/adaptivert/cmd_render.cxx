@@ -60,6 +60,7 @@ void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam)
   cam->SetParallelProjection(o.Flag("parallel"));
   art::Camera::Frame(cam, bounds, o.GetDouble("azimuth"), o.GetDouble("elevation"), Zoom(o));
 }
+
 bool OptionAppliesTo(const std::string& option, art::DataKind kind)
 {
   bool declaredElsewhere = false;
