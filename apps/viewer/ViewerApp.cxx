@@ -27,7 +27,13 @@ ViewerApp::ViewerApp(ViewerOptions options)
   : Impl(new Internals)
 {
   Impl->Opt = std::move(options);
-  Impl->Scene = LoadScene(Impl->Opt.File, Impl->Opt.TransferFunction);
+  Impl->Scene = LoadScene(Impl->Opt.File, Impl->Opt.TransferFunction, Impl->Opt.Array);
+  if (!Impl->Opt.Array.empty())
+  {
+    // The mapper picks the same array by name (point or cell data) from every level's grid.
+    Impl->Mapper->SetScalarModeToUsePointFieldData();
+    Impl->Mapper->SelectScalarArray(Impl->Opt.Array.c_str());
+  }
   if (!Impl->Opt.Script.empty())
   {
     Impl->Script = ReadScript(Impl->Opt.Script);
@@ -38,8 +44,8 @@ ViewerApp::ViewerApp(ViewerOptions options)
 #ifdef ART_HAVE_Reduction
   if (Impl->Scene.Image) // the voxel checks (NaN, 2-D, components) fail here, before any window
   {
-    Impl->Worker = std::make_unique<ReductionWorker>(
-      art::VolumeFromImage(Impl->Scene.Image, Impl->Opt.File), Impl->Opt.Tets);
+    Impl->Worker = std::make_unique<ReductionWorker>(art::VolumeFromImage(Impl->Scene.Image, Impl->Opt.File),
+      Budgets(Impl->Opt, Impl->Scene.Image->GetNumberOfPoints()));
   }
 #endif
 }

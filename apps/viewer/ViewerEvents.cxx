@@ -132,7 +132,8 @@ void ViewerApp::Internals::PollReduction()
     bar = st.Error.empty() ? "reduced: " + std::to_string(Scene.Levels.size()) + " nested levels from one run"
                            : "reduction failed: " + st.Error;
     char note[96];
-    std::snprintf(note, sizeof note, ", %zu levels reduced in %.2f s", Scene.Levels.size(), st.Seconds);
+    std::snprintf(note, sizeof note, ", %zu level%s reduced in %.2f s", Scene.Levels.size(),
+      Scene.Levels.size() == 1 ? "" : "s", st.Seconds);
     ReductionNote = note;
     TitleFrameSeconds = -1;
     if (!st.Error.empty())

@@ -3,6 +3,7 @@
 #include "TransferFunction.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -32,7 +33,9 @@ std::string UsageText()
          "triangle scenes are ray traced through the TriangleGrid surface tracer.\n\n"
          "options:\n"
          "  --size WxH           window size in pixels (default 800x600)\n"
-         "  --tets N[,N...]      reduction levels for a volume (default 2000,10000,40000)\n"
+         "  --tets N[,N...]      reduction levels for a volume, counts or P% of the voxel count\n"
+         "                       (default 2000,10000,40000)\n"
+         "  --array NAME         point (or cell) array to show (default: the active scalars)\n"
          "  --tf NAME|FILE       transfer function: ct-skin-bone, ct-bone, grey-ramp, constant, or a\n"
          "                       file of 'scalar r g b opacity' lines (default ct-skin-bone)\n"
          "  --script FILE        run scripted actions (one per line: key K | wait S | wait-reduction |\n"
@@ -78,7 +81,7 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
       a = a.substr(0, eq);
       inlineValue = true;
     }
-    static const char* withValue[] = { "--size", "--tets", "--tf", "--script", "--screenshot" };
+    static const char* withValue[] = { "--size", "--tets", "--array", "--tf", "--script", "--screenshot" };
     if (std::find(std::begin(withValue), std::end(withValue), a) == std::end(withValue))
     {
       throw UsageError("unknown option '" + a + "'");
@@ -109,10 +112,22 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
     else if (a == "--tets")
     {
       o.Tets.clear();
+      o.TetPercents.clear();
       std::stringstream ss(value);
       std::string item;
       while (std::getline(ss, item, ','))
       {
+        if (!item.empty() && item.back() == '%')
+        {
+          char* end = nullptr;
+          const double p = std::strtod(item.c_str(), &end);
+          if (end != item.c_str() + item.size() - 1 || !(p > 0 && p <= 500))
+          {
+            throw UsageError("--tets percentages must be in (0, 500], got " + item);
+          }
+          o.TetPercents.push_back(p);
+          continue;
+        }
         const long long n = ParseCount(item, "--tets");
         if (n < 6)
         {
@@ -120,12 +135,20 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
         }
         o.Tets.push_back(n);
       }
-      if (o.Tets.empty())
+      if (o.Tets.empty() && o.TetPercents.empty())
       {
-        throw UsageError("--tets expects N[,N...]");
+        throw UsageError("--tets expects N[,N...] (or P% of the voxel count)");
       }
       std::sort(o.Tets.begin(), o.Tets.end());
       o.Tets.erase(std::unique(o.Tets.begin(), o.Tets.end()), o.Tets.end());
+    }
+    else if (a == "--array")
+    {
+      if (value.empty())
+      {
+        throw UsageError("--array expects an array name");
+      }
+      o.Array = value;
     }
     else if (a == "--tf")
     {
@@ -160,10 +183,27 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
   {
     throw UsageError("needs a FILE to show");
   }
-  if (o.Tets.empty())
+  if (o.Tets.empty() && o.TetPercents.empty())
   {
     o.Tets = { 2000, 10000, 40000 };
   }
   return o;
+}
+
+std::vector<long long> Budgets(const ViewerOptions& o, long long voxels)
+{
+  std::vector<long long> b = o.Tets;
+  for (double p : o.TetPercents)
+  {
+    const long long n = std::llround(p / 100.0 * static_cast<double>(voxels));
+    if (n < 6)
+    {
+      throw UsageError("--tets " + std::to_string(p) + "% is " + std::to_string(n) + " tets for this volume; at least 6");
+    }
+    b.push_back(n);
+  }
+  std::sort(b.begin(), b.end());
+  b.erase(std::unique(b.begin(), b.end()), b.end());
+  return b;
 }
 } // namespace view

@@ -1,4 +1,4 @@
-// ViewerOptions: the command line of adaptivert-view (FILE, --size, --tets, --tf, --script,
+// ViewerOptions: the command line of adaptivert-view (FILE, --size, --tets, --array, --tf, --script,
 // --screenshot, --help). Parsing never touches VTK, so usage errors come before any window.
 #ifndef art_ViewerOptions_h
 #define art_ViewerOptions_h
@@ -20,6 +20,8 @@ struct ViewerOptions
   std::string File;
   int Width = 800, Height = 600;
   std::vector<long long> Tets;   ///< nested reduction budgets, ascending (volumes)
+  std::vector<double> TetPercents; ///< more budgets as percentages of the voxel count
+  std::string Array;             ///< point (or cell) array to show (default: the active scalars)
   std::string TransferFunction = "ct-skin-bone";
   std::string Script;            ///< file of scripted actions (tests, demos)
   std::string Screenshot;        ///< take one after the script (or the reduction) and exit
@@ -28,6 +30,9 @@ struct ViewerOptions
 
 /// Throws UsageError for unknown options, missing values, bad sizes or budgets.
 ViewerOptions ParseOptions(const std::vector<std::string>& args);
+/// Tets and TetPercents of `voxels` as one ascending list of budgets; throws UsageError for a
+/// percentage under 6 tets.
+std::vector<long long> Budgets(const ViewerOptions& o, long long voxels);
 std::string UsageText();
 } // namespace view
 

@@ -48,11 +48,12 @@ void ViewerScene::AddLevel(vtkSmartPointer<vtkUnstructuredGrid> grid, long long 
   LevelLabels.push_back(buf);
 }
 
-ViewerScene LoadScene(const std::string& file, const std::string& tf)
+ViewerScene LoadScene(const std::string& file, const std::string& tf, const std::string& array)
 {
   ViewerScene s;
-  art::DataKind kind;
-  vtkSmartPointer<vtkDataObject> data = art::Load(file, &kind);
+  const art::DataKind kind = art::KindOf(file);
+  vtkSmartPointer<vtkDataObject> data =
+    kind == art::DataKind::Volume ? vtkSmartPointer<vtkDataObject>(art::LoadVolume(file, array)) : art::Load(file);
   if (kind == art::DataKind::Surface)
   {
     auto* pd = vtkPolyData::SafeDownCast(data);
@@ -90,7 +91,7 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf)
   {
     vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(data);
     std::string note;
-    const art::TetMesh mesh = art::TetMesh::FromVTK(grid, {}, &note, file); // checks scalars and cells
+    const art::TetMesh mesh = art::TetMesh::FromVTK(grid, array, &note, file); // checks scalars and cells
     s.Range[0] = mesh.ScalarRange(0);
     s.Range[1] = mesh.ScalarRange(1);
     s.Bounds = mesh.Bounds();

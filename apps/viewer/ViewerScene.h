@@ -35,7 +35,7 @@ struct ViewerScene
 
 /// Loads `file` (volume, tet mesh or triangle scene) with the transfer-function preset `tf`.
 /// Throws art::Error naming the file for anything wrong with it.
-ViewerScene LoadScene(const std::string& file, const std::string& tf);
+ViewerScene LoadScene(const std::string& file, const std::string& tf, const std::string& array = {});
 
 /// 12345 -> "12,345".
 std::string Grouped(long long n);

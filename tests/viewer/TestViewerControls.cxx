@@ -65,6 +65,19 @@ TEST(ViewerOptions, DefaultsAndValues)
   EXPECT_TRUE(Parse({ "--help" }).Help);
 }
 
+TEST(ViewerOptions, ArrayAndPercentBudgets)
+{
+  const ViewerOptions o = Parse({ "--tets", "0.5%,4000,1%", "--array", "density", "head.mha" });
+  EXPECT_EQ(o.Array, "density");
+  EXPECT_EQ(o.Tets, (std::vector<long long>{ 4000 }));
+  // 0.5% and 1% of the 884,736 voxels of the default CT, merged with the count, ascending.
+  EXPECT_EQ(Budgets(o, 884736), (std::vector<long long>{ 4000, 4424, 8847 }));
+  EXPECT_EQ(Budgets(Parse({ "--tets", "1%", "a.mha" }), 884736), (std::vector<long long>{ 8847 })); // no defaults
+  EXPECT_THROW(Budgets(Parse({ "--tets", "0.001%", "a.mha" }), 1000), UsageError); // 0 tets
+  EXPECT_THROW(Parse({ "--tets", "x%", "a.mha" }), UsageError);
+  EXPECT_THROW(Parse({ "--array", "", "a.mha" }), UsageError);
+}
+
 TEST(ViewerOptions, UsageErrors)
 {
   EXPECT_THROW(Parse({}), UsageError);
