@@ -289,14 +289,6 @@ TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
   }
   if (!M.IsConvex() && S.boundaryGrid)
   {
-    // The grid stores floats: its points are taken about the mesh's centre (and rays moved alike)
-    // so a mesh far from the origin, in survey coordinates, keeps its faces apart.
-    BoundaryOrigin = M.Bounds().Center();
-    std::vector<Vec3> pts(M.PointsArray());
-    for (Vec3& p : pts)
-    {
-      p = p - BoundaryOrigin;
-    }
     std::vector<std::array<long long, 3>> tris;
     tris.reserve(M.BoundaryFaces().size());
     for (const auto& bf : M.BoundaryFaces())
@@ -305,7 +297,10 @@ TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
       const int* fv = TetMesh::FaceVertex[bf[1]];
       tris.push_back({ v[fv[0]], v[fv[1]], v[fv[2]] });
     }
-    Boundary = MakeAccelerator(std::make_shared<const TriangleStore>(std::move(pts), tris));
+    // The grid stores floats: a mesh far from the origin, in survey coordinates, is taken about
+    // its centre (and rays are moved alike) so its faces stay apart.
+    BoundaryOrigin = TriangleStore::OriginFor(M.Bounds());
+    Boundary = MakeAccelerator(std::make_shared<const TriangleStore>(M.PointsArray(), tris, BoundaryOrigin));
   }
 }
 

@@ -17,17 +17,22 @@
 
 namespace art
 {
-TriangleStore::TriangleStore(std::vector<Vec3> points, const std::vector<std::array<long long, 3>>& triangles)
+TriangleStore::TriangleStore(
+  std::vector<Vec3> points, const std::vector<std::array<long long, 3>>& triangles, const Vec3& origin)
 {
   std::vector<long long> original(triangles.size());
   std::iota(original.begin(), original.end(), 0LL);
-  Build(std::move(points), triangles, original);
+  Build(std::move(points), triangles, original, origin);
 }
 
 void TriangleStore::Build(std::vector<Vec3> points, const std::vector<std::array<long long, 3>>& triangles,
-  const std::vector<long long>& original)
+  const std::vector<long long>& original, const Vec3& origin)
 {
   Pts = std::move(points);
+  for (Vec3& p : Pts)
+  {
+    p = p - origin;
+  }
   const long long np = static_cast<long long>(Pts.size());
   Box = Box3();
   for (const Vec3& p : Pts)
@@ -194,7 +199,7 @@ TriangleStore TriangleStore::FromPolyData(vtkPolyData* pd, const Vec3& origin)
   std::vector<Vec3> pts(static_cast<size_t>(pd->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
   {
-    pts[i] = Vec3(pd->GetPoint(i)) - origin;
+    pts[i] = Vec3(pd->GetPoint(i));
   }
   std::vector<std::array<long long, 3>> tris;
   std::vector<long long> original;
@@ -265,7 +270,7 @@ TriangleStore TriangleStore::FromPolyData(vtkPolyData* pd, const Vec3& origin)
     }
   }
   TriangleStore s;
-  s.Build(std::move(pts), tris, original);
+  s.Build(std::move(pts), tris, original, origin);
   return s;
 }
 

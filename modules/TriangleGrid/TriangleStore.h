@@ -49,8 +49,10 @@ class ADAPTIVERTTRIANGLEGRID_EXPORT TriangleStore
 {
 public:
   TriangleStore() = default;
-  /// Triangles index `points`; zero-area ones and ones with a bad index are dropped.
-  TriangleStore(std::vector<Vec3> points, const std::vector<std::array<long long, 3>>& triangles);
+  /// Triangles index `points`, taken relative to `origin` (see OriginFor); zero-area ones and ones
+  /// with a bad index are dropped.
+  TriangleStore(std::vector<Vec3> points, const std::vector<std::array<long long, 3>>& triangles,
+    const Vec3& origin = Vec3());
   /// Triangulates polygons and strips of `pd` (vertices and lines are ignored), its points taken
   /// relative to `origin`; OriginalIndex gives the polydata cell id of each record. Throws
   /// art::Error on null input.
@@ -80,7 +82,7 @@ public:
 
 private:
   void Build(std::vector<Vec3> points, const std::vector<std::array<long long, 3>>& triangles,
-    const std::vector<long long>& original);
+    const std::vector<long long>& original, const Vec3& origin);
 
   std::vector<Vec3> Pts;
   std::vector<TriangleRecord> Records;
