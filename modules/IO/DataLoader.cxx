@@ -1,4 +1,5 @@
 #include "DataLoader.h"
+#include "ArrayChoice.h"
 #include "AtomicFile.h"
 #include "Error.h"
 #include "MetaImageCheck.h"
@@ -200,26 +201,14 @@ DataKind LegacyKind(const std::string& path)
 // first one-component array when none is active (XML files need not mark one).
 void SelectScalars(vtkPointData* pd, const std::string& name, const std::string& path)
 {
-  if (!name.empty())
+  vtkDataArray* a = ChooseArray(pd, name, true); // SetActiveScalars needs the name
+  if (!a && !name.empty())
   {
-    if (!pd->GetArray(name.c_str()))
-    {
-      std::string names;
-      for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
-      {
-        names += (i ? ", " : "") + std::string(pd->GetArrayName(i) ? pd->GetArrayName(i) : "(unnamed)");
-      }
-      throw Error("has no point array '" + name + "' (it has: " + (names.empty() ? "none" : names) + ")", path);
-    }
-    pd->SetActiveScalars(name.c_str());
-    return;
+    throw Error("has no point array '" + name + "' (it has: " + ArrayNames({ pd }) + ")", path);
   }
-  for (int i = 0; i < pd->GetNumberOfArrays() && !pd->GetScalars(); ++i)
+  if (a && a != pd->GetScalars())
   {
-    if (pd->GetArray(i) && pd->GetArray(i)->GetNumberOfComponents() == 1 && pd->GetArrayName(i))
-    {
-      pd->SetActiveScalars(pd->GetArrayName(i));
-    }
+    pd->SetActiveScalars(a->GetName());
   }
 }
 

@@ -1,4 +1,5 @@
 #include "TetMesh.h"
+#include "ArrayChoice.h"
 #include "Morton.h"
 
 #include "Error.h"
@@ -523,35 +524,18 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
   // tetrahedralising, a cell's weight at a corner would depend on how many tets it became.
   vtkSmartPointer<vtkUnstructuredGrid> ug = grid;
   std::string notes;
-  vtkDataArray* s = array.empty() ? ug->GetPointData()->GetScalars() : ug->GetPointData()->GetArray(array.c_str());
-  for (int i = 0; i < ug->GetPointData()->GetNumberOfArrays() && !s && array.empty(); ++i)
-  {
-    vtkDataArray* a = ug->GetPointData()->GetArray(i);
-    s = a && a->GetNumberOfComponents() == 1 ? a : nullptr;
-  }
+  vtkDataArray* s = ChooseArray(ug->GetPointData(), array);
   if (!s)
   {
     // Cell scalars (common in simulation output) are averaged to the points by VTK's
     // vtkCellDataToPointData, since the walk interpolates linearly inside each tet.
     vtkCellData* cd = ug->GetCellData();
-    vtkDataArray* cs = array.empty() ? cd->GetScalars() : cd->GetArray(array.c_str());
-    for (int i = 0; i < cd->GetNumberOfArrays() && !cs && array.empty(); ++i)
-    {
-      cs = cd->GetArray(i) && cd->GetArray(i)->GetNumberOfComponents() == 1 ? cd->GetArray(i) : nullptr;
-    }
+    vtkDataArray* cs = ChooseArray(cd, array);
     if (!cs || !cs->GetName())
     {
-      std::string names;
-      for (vtkFieldData* fd : { static_cast<vtkFieldData*>(ug->GetPointData()), static_cast<vtkFieldData*>(cd) })
-      {
-        for (int i = 0; i < fd->GetNumberOfArrays(); ++i)
-        {
-          names += (names.empty() ? "" : ", ") + std::string(fd->GetArrayName(i) ? fd->GetArrayName(i) : "(unnamed)");
-        }
-      }
       throw Error(array.empty() ? "mesh has no point or cell scalars"
                                 : "mesh has no point or cell array '" + array + "' (it has: " +
-            (names.empty() ? std::string("none") : names) + ")",
+            ArrayNames({ ug->GetPointData(), cd }) + ")",
         file);
     }
     if (cs->GetNumberOfComponents() != 1)
