@@ -333,6 +333,11 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   auto img = vtkSmartPointer<vtkImageData>::New();
   img->ShallowCopy(reader->GetOutputDataObject(0));
   SelectScalars(img->GetPointData(), array, path);
+  double direction[9];
+  if (vtkMetaImageReader::SafeDownCast(reader) && MetaImageDirection(path, direction))
+  {
+    img->SetDirectionMatrix(direction);
+  }
   if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(reader))
   {
     ApplyRescale(img, nifti->GetRescaleSlope(), nifti->GetRescaleIntercept());

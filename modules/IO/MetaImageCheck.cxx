@@ -29,18 +29,20 @@ std::string Trim(const std::string& s)
   const auto e = s.find_last_not_of(" \t\r");
   return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
 }
-} // namespace
 
-void CheckMetaImage(const std::string& path)
+using Keys = std::map<std::string, std::string>;
+
+// The header's "Key = Value" lines up to ElementDataFile; dataStart is where the data begins.
+Keys ReadHeader(const std::string& path, std::streamoff& dataStart)
 {
   std::ifstream in(path, std::ios::binary);
   if (!in)
   {
     throw Error("cannot open file", path);
   }
-  std::map<std::string, std::string> keys;
+  Keys keys;
   std::string line;
-  std::streamoff dataStart = -1;
+  dataStart = -1;
   // The header is text lines "Key = Value" ending with ElementDataFile.
   for (int n = 0; n < 200 && std::getline(in, line); ++n)
   {
@@ -57,6 +59,31 @@ void CheckMetaImage(const std::string& path)
       break;
     }
   }
+  return keys;
+}
+
+// Up to n numbers of a header value; fewer when the value is shorter or not numeric.
+std::vector<double> Numbers(const Keys& keys, const std::string& key, size_t n)
+{
+  std::vector<double> v;
+  const auto it = keys.find(key);
+  if (it != keys.end())
+  {
+    std::istringstream s(it->second);
+    double x;
+    while (v.size() < n && s >> x)
+    {
+      v.push_back(x);
+    }
+  }
+  return v;
+}
+} // namespace
+
+void CheckMetaImage(const std::string& path)
+{
+  std::streamoff dataStart = -1;
+  Keys keys = ReadHeader(path, dataStart);
   if (dataStart < 0 || !keys.count("DimSize") || !keys.count("ElementType"))
   {
     throw Error("not a MetaImage header (no DimSize, ElementType or ElementDataFile)", path);
@@ -118,5 +145,41 @@ void CheckMetaImage(const std::string& path)
         std::to_string(std::max(0LL, have)),
       path);
   }
+}
+
+bool MetaImageDirection(const std::string& path, double direction[9])
+{
+  std::streamoff dataStart = -1;
+  const Keys keys = ReadHeader(path, dataStart);
+  // MetaIO reads the matrix under any of these three names.
+  std::vector<double> m;
+  for (const char* key : { "TransformMatrix", "Rotation", "Orientation" })
+  {
+    if (keys.count(key))
+    {
+      m = Numbers(keys, key, 9);
+      break;
+    }
+  }
+  const bool hasMatrix = m.size() == 9;
+  if (!hasMatrix)
+  {
+    m = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  }
+  // ITK writes the matrix axis by axis: numbers 3c..3c+2 are where index axis c points. VTK's
+  // direction matrix holds those axes as columns.
+  const std::vector<double> spacing = Numbers(keys, "ElementSpacing", 3);
+  bool identity = true;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      // A negative spacing (VTK keeps only its size) turns its axis around.
+      const double sign = (c < static_cast<int>(spacing.size()) && spacing[c] < 0) ? -1.0 : 1.0;
+      direction[3 * r + c] = sign * m[3 * c + r];
+      identity = identity && direction[3 * r + c] == (r == c ? 1.0 : 0.0);
+    }
+  }
+  return !identity;
 }
 } // namespace art

@@ -9,6 +9,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
 #include <vtkImageDataToPointSet.h>
+#include <vtkMatrix3x3.h>
 #include <vtkMetaImageWriter.h>
 #include <vtkNIFTIImageWriter.h>
 #include <vtkNew.h>
@@ -163,6 +164,44 @@ TEST(Formats, MetaImageHeaderWithSeparateRaw)
   // The header names a raw file that is too short: a clear error, not a half-read volume.
   fs::resize_file(Dir() + "/split.raw", 100);
   EXPECT_THROW(art::LoadVolume(Dir() + "/split.mhd"), art::Error);
+}
+
+// vtkMetaImageReader drops TransformMatrix (and a negative spacing's sign): a volume ITK wrote
+// with its axes turned or mirrored must still put each voxel where the header says.
+TEST(Formats, MetaImageDirectionAndNegativeSpacing)
+{
+  auto img = SmallVolume();
+  vtkNew<vtkMetaImageWriter> w;
+  w->SetInputData(img);
+  w->SetFileName((Dir() + "/turned.mhd").c_str());
+  w->SetRAWFileName((Dir() + "/turned.raw").c_str());
+  w->SetCompression(false);
+  w->Write();
+  auto rewrite = [&](const std::string& name, const std::string& spacing, const std::string& matrix) {
+    std::ofstream f(Dir() + "/" + name);
+    f << "ObjectType = Image\nNDims = 3\nDimSize = 11 5 3\nElementType = MET_SHORT\n"
+      << "Offset = 10 -4 3\nElementSpacing = " << spacing << "\n"
+      << (matrix.empty() ? "" : "TransformMatrix = " + matrix + "\n") << "ElementDataFile = turned.raw\n";
+  };
+  // ITK writes the matrix axis by axis: index axis i points along +y, j along -x, k along z.
+  rewrite("turned.mhd", "0.5 0.75 2", "0 1 0 -1 0 0 0 0 1");
+  auto turned = art::LoadVolume(Dir() + "/turned.mhd");
+  ExpectSameVolume(img, turned);
+  double p[3];
+  turned->TransformContinuousIndexToPhysicalPoint(2, 1, 1, p);
+  EXPECT_NEAR(p[0], 10 - 0.75, 1e-9);
+  EXPECT_NEAR(p[1], -4 + 2 * 0.5, 1e-9);
+  EXPECT_NEAR(p[2], 3 + 2.0, 1e-9);
+  // A negative spacing turns its axis around; the size stays the spacing.
+  rewrite("mirrored.mhd", "0.5 0.75 -2", "");
+  auto mirrored = art::LoadVolume(Dir() + "/mirrored.mhd");
+  ExpectSameVolume(img, mirrored);
+  mirrored->TransformContinuousIndexToPhysicalPoint(0, 0, 2, p);
+  EXPECT_NEAR(p[2], 3 - 4.0, 1e-9);
+  EXPECT_NEAR(p[0], 10, 1e-9);
+  // The identity stays the identity.
+  rewrite("plain.mhd", "0.5 0.75 2", "1 0 0 0 1 0 0 0 1");
+  EXPECT_TRUE(art::LoadVolume(Dir() + "/plain.mhd")->GetDirectionMatrix()->IsIdentity());
 }
 
 // vtkNrrdReader takes a fastest axis of 9 or fewer samples for vector components (its own
