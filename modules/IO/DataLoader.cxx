@@ -3,6 +3,7 @@
 #include "AtomicFile.h"
 #include "Error.h"
 #include "MetaImageCheck.h"
+#include "NrrdDirection.h"
 #include "PlyCheck.h"
 
 #include <vtkAlgorithm.h>
@@ -335,6 +336,10 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   SelectScalars(img->GetPointData(), array, path);
   double direction[9];
   if (vtkMetaImageReader::SafeDownCast(reader) && MetaImageDirection(path, direction))
+  {
+    img->SetDirectionMatrix(direction);
+  }
+  if ((e == ".nrrd" || e == ".nhdr") && NrrdDirection(path, direction))
   {
     img->SetDirectionMatrix(direction);
   }

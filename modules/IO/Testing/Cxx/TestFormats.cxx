@@ -221,6 +221,34 @@ TEST(Formats, NrrdWrittenByHand)
   ExpectSameVolume(img, art::LoadVolume(p), false);
 }
 
+// vtkNrrdReader keeps only the lengths of "space directions" as the spacing: their signs and
+// rotation (Slicer writes them on every volume) must reach the direction matrix.
+TEST(Formats, NrrdSpaceDirections)
+{
+  auto img = SmallVolume();
+  auto write = [&](const std::string& name, const std::string& directions) {
+    std::ofstream f(Dir() + "/" + name, std::ios::binary);
+    f << "NRRD0004\n# turned\ntype: short\ndimension: 3\nspace: left-posterior-superior\n"
+         "sizes: 11 5 3\nspace directions: " << directions << "\nkinds: domain domain domain\n"
+         "space origin: (10,-4,3)\nencoding: raw\nendian: little\n\n";
+    auto* s = vtkShortArray::SafeDownCast(img->GetPointData()->GetScalars());
+    f.write(reinterpret_cast<const char*>(s->GetPointer(0)), s->GetNumberOfTuples() * 2);
+  };
+  // Index axis i points along +y, j along -x, k along +z.
+  write("turned.nrrd", "(0,0.5,0) (-0.75,0,0) (0,0,2)");
+  auto turned = art::LoadVolume(Dir() + "/turned.nrrd");
+  ExpectSameVolume(img, turned);
+  double p[3];
+  turned->TransformContinuousIndexToPhysicalPoint(2, 1, 1, p);
+  EXPECT_NEAR(p[0], 10 - 0.75, 1e-9);
+  EXPECT_NEAR(p[1], -4 + 2 * 0.5, 1e-9);
+  EXPECT_NEAR(p[2], 3 + 2.0, 1e-9);
+  write("plain.nrrd", "(0.5,0,0) (0,0.75,0) (0,0,2)");
+  EXPECT_TRUE(art::LoadVolume(Dir() + "/plain.nrrd")->GetDirectionMatrix()->IsIdentity());
+  write("zero.nrrd", "(0.5,0,0) (0,0,0) (0,0,2)");
+  EXPECT_THROW(art::LoadVolume(Dir() + "/zero.nrrd"), art::Error);
+}
+
 TEST(Formats, DicomSeriesFolder)
 {
   // tests/data/dicom: 4 slices of 16 x 12 cut from the default CT (tests/data/make_dicom.py).
