@@ -20,6 +20,7 @@
 #include <vtkImageData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -120,10 +121,14 @@ int Run(const cli::Options& o)
     {
       const size_t b = std::min(list.find(',', a), list.size());
       const long long n = cli::ParseBudget(list.substr(a, b - a), voxels, "--levels");
-      if (opt.TargetTets <= 0 || n < opt.TargetTets)
+      // A level is a coarser mesh met on the way to the output; one at or past --tets never is
+      // (it was dropped without a word).
+      if (opt.TargetTets > 0 && n >= opt.TargetTets)
       {
-        opt.Levels.push_back(n);
+        throw cli::UsageError("--levels: " + std::to_string(n) + " tets is not below --tets " +
+          std::to_string(opt.TargetTets) + " (levels are the coarser meshes written on the way)");
       }
+      opt.Levels.push_back(n);
       a = b + 1;
     }
   }
@@ -181,6 +186,21 @@ int Run(const cli::Options& o)
                            : " (error bound not reached: no finer tets than the voxels allow)");
     }
   }
+  // With --max-error the run may stop before a level's budget: say which files were not written.
+  std::vector<long long> missing;
+  for (long long b : opt.Levels)
+  {
+    if (std::none_of(meshes.begin(), meshes.end() - 1, [b](const art::ReducedMesh& m) { return m.TargetTets == b; }) &&
+      std::find(missing.begin(), missing.end(), b) == missing.end())
+    {
+      missing.push_back(b);
+    }
+  }
+  for (long long b : missing)
+  {
+    std::fprintf(stderr, "adaptivert: %s: level %lld not written: the reduction stopped at %lld tets\n",
+      outPath.c_str(), b, static_cast<long long>(meshes.back().NumberOfTets()));
+  }
   const auto& f = meshes.back();
   const auto q = art::MeasureQuality(f.Points.data(), f.NumberOfVertices(), f.Tets.data(), f.NumberOfTets());
   if (!q.Valid())
@@ -202,6 +222,7 @@ int Run(const cli::Options& o)
       j.Set("weighted_rms_error", f.WeightedRms).Set("weighted_max_error", f.WeightedMax);
     }
     j.Set("levels", levels);
+    j.Set("levels_not_written", std::vector<double>(missing.begin(), missing.end()));
     std::printf("%s\n", j.Str().c_str());
   }
   else
