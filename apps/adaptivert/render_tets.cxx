@@ -49,6 +49,9 @@ void Declare(cli::Options& o)
     "transfer function: a preset (ct-skin-bone, ct-bone, grey-ramp, constant) or a file of "
     "'scalar r g b opacity' lines",
     "ct-skin-bone");
+  o.Add("unit-distance", 0, "U",
+    "world distance over which the transfer function's opacity applies (default: 1 for CT in Hounsfield "
+    "units, in mm; else the data's mean sample spacing, so any unit renders alike)");
   o.Add("iso", 0, "V[,V..]", "iso-surfaces at these scalar values (shaded, combined with the volume)");
   o.Add("iso-opacity", 0, "A", "opacity of every iso-surface", "1");
   o.Add("ert", 0, "A", "early ray termination at this opacity (1 = off)", "0.99");
@@ -64,14 +67,31 @@ void Declare(cli::Options& o)
   o.Add("no-error", 0, "", "skip the reference render and the error figures");
 }
 
-art::TransferFunction MakeTF(const cli::Options& o, double lo, double hi)
+// A preset's opacities are per unit distance: 1 mm on CT in HU, else the data's sample spacing;
+// --unit-distance overrides that and a file's own unit-distance line.
+art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo, double hi)
 {
   const std::string tf = o.Get("tf");
+  art::TransferFunction f;
   if (std::filesystem::exists(tf) || tf.find('.') != std::string::npos || tf.find('/') != std::string::npos)
   {
-    return art::TransferFunction::FromFile(tf);
+    f = art::TransferFunction::FromFile(tf);
   }
-  return art::TransferFunction::Preset(tf, lo, hi);
+  else
+  {
+    f = art::TransferFunction::Preset(
+      tf, lo, hi, art::TransferFunction::PresetUnitDistance(lo, hi, art::TransferFunction::SampleSpacing(data)));
+  }
+  if (o.Has("unit-distance"))
+  {
+    const double u = o.GetDouble("unit-distance");
+    if (!(u > 0) || !std::isfinite(u))
+    {
+      throw cli::UsageError("--unit-distance expects a positive length, got '" + o.Get("unit-distance") + "'");
+    }
+    f = art::TransferFunction(f.Nodes(), u);
+  }
+  return f;
 }
 
 art::RenderSettings MakeSettings(const cli::Options& o, art::TransferFunction tf)
@@ -146,7 +166,7 @@ int Run(const cli::Options& o, const std::string& input)
         input);
     }
     volume->GetPointData()->GetScalars()->GetRange(range);
-    settings = MakeSettings(o, MakeTF(o, range[0], range[1]));
+    settings = MakeSettings(o, MakeTF(o, volume, range[0], range[1]));
     if (!o.Flag("reference"))
     {
       if (o.Has("tets") || o.Has("max-error"))
@@ -212,7 +232,7 @@ int Run(const cli::Options& o, const std::string& input)
     mesh = art::TetMesh::FromVTK(grid, o.Get("array"), &note, input);
     meshLabel = "tet mesh";
     range[0] = mesh.ScalarRange(0), range[1] = mesh.ScalarRange(1);
-    settings = MakeSettings(o, MakeTF(o, range[0], range[1]));
+    settings = MakeSettings(o, MakeTF(o, grid, range[0], range[1]));
   }
   buildSeconds = Seconds(t0);
 

@@ -285,7 +285,11 @@ TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
 {
   if (S.tf.Nodes().empty())
   {
-    S.tf = TransferFunction::Preset("grey-ramp", M.ScalarRange(0), M.ScalarRange(1));
+    const Vec3 e = M.Bounds().hi - M.Bounds().lo;
+    const double extent[3] = { e.x, e.y, e.z };
+    const double lo = M.ScalarRange(0), hi = M.ScalarRange(1);
+    S.tf = TransferFunction::Preset("grey-ramp", lo, hi,
+      TransferFunction::PresetUnitDistance(lo, hi, TransferFunction::MeanSpacing(extent, double(M.NumberOfPoints()))));
   }
   if (!M.IsConvex() && S.boundaryGrid)
   {

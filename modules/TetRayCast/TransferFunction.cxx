@@ -3,6 +3,9 @@
 #include "Error.h"
 
 #include <vtkColorTransferFunction.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPiecewiseFunction.h>
 #include <vtkVolumeProperty.h>
@@ -171,14 +174,68 @@ std::vector<std::string> TransferFunction::PresetNames()
   return { "ct-skin-bone", "ct-bone", "grey-ramp", "constant" };
 }
 
-TransferFunction TransferFunction::Preset(const std::string& name, double lo, double hi)
+double TransferFunction::PresetUnitDistance(double lo, double hi, double h)
+{
+  return LooksLikeHU(lo, hi) || !(h > 0.0) || !std::isfinite(h) ? 1.0 : h;
+}
+
+double TransferFunction::MeanSpacing(const double extent[3], double points)
+{
+  double volume = 1.0;
+  int axes = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (extent[k] > 0.0)
+    {
+      volume *= extent[k];
+      ++axes;
+    }
+  }
+  const double h = axes > 0 && points > 1 ? std::pow(volume / points, 1.0 / axes) : 1.0;
+  return h > 0.0 && std::isfinite(h) ? h : 1.0;
+}
+
+double TransferFunction::SampleSpacing(vtkDataSet* data)
+{
+  if (auto* image = vtkImageData::SafeDownCast(data))
+  {
+    int dims[3];
+    image->GetDimensions(dims);
+    double product = 1.0;
+    int axes = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (dims[k] > 1)
+      {
+        product *= std::fabs(image->GetSpacing()[k]);
+        ++axes;
+      }
+    }
+    const double h = axes > 0 ? std::pow(product, 1.0 / axes) : 1.0;
+    return h > 0.0 && std::isfinite(h) ? h : 1.0;
+  }
+  if (vtkDataArray* a = data->GetFieldData() ? data->GetFieldData()->GetArray("SourceSpacing") : nullptr)
+  {
+    const double h = a->GetNumberOfTuples() > 0 ? a->GetComponent(0, 0) : 0.0;
+    if (h > 0.0 && std::isfinite(h))
+    {
+      return h;
+    }
+  }
+  double b[6];
+  data->GetBounds(b);
+  const double extent[3] = { b[1] - b[0], b[3] - b[2], b[5] - b[4] };
+  return MeanSpacing(extent, static_cast<double>(data->GetNumberOfPoints()));
+}
+
+TransferFunction TransferFunction::Preset(const std::string& name, double lo, double hi, double unitDistance)
 {
   if (!(hi > lo))
   {
     hi = lo + 1.0;
   }
   // CT presets in Hounsfield units when the data look like CT, else at fractions of the range.
-  const bool hu = lo <= -500.0 && hi >= 500.0;
+  const bool hu = LooksLikeHU(lo, hi);
   auto at = [&](double h, double frac) { return hu ? h : lo + frac * (hi - lo); };
   std::vector<Node> n;
   if (name == "ct-skin-bone")
@@ -210,7 +267,7 @@ TransferFunction TransferFunction::Preset(const std::string& name, double lo, do
     }
     throw Error("unknown transfer-function preset '" + name + "' (known: " + all + ")");
   }
-  return TransferFunction(std::move(n), 1.0);
+  return TransferFunction(std::move(n), unitDistance);
 }
 
 TransferFunction TransferFunction::FromFile(const std::string& path)

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+class vtkDataSet;
 class vtkVolumeProperty;
 
 namespace art
@@ -39,9 +40,23 @@ public:
   /// The colour, scalar-opacity functions and unit distance of `p` (component 0).
   static TransferFunction FromVTK(vtkVolumeProperty* p);
   /// "ct-skin-bone", "ct-bone", "grey-ramp", "constant" laid over the data range [lo, hi]
-  /// (CT presets use Hounsfield units when the range looks like CT, else fractions of it).
-  static TransferFunction Preset(const std::string& name, double lo, double hi);
+  /// (CT presets use Hounsfield units when the range looks like CT, else fractions of it), their
+  /// opacities per unitDistance world units (PresetUnitDistance gives the data's).
+  static TransferFunction Preset(const std::string& name, double lo, double hi, double unitDistance = 1.0);
   static std::vector<std::string> PresetNames();
+  /// Does the range [lo, hi] look like CT in Hounsfield units (air near -1000, bone above 500)?
+  static bool LooksLikeHU(double lo, double hi) { return lo <= -500.0 && hi >= 500.0; }
+  /// The unit distance a preset gets over data with scalar range [lo, hi] and mean sample spacing
+  /// h: 1 for CT in Hounsfield units (stored in millimetres; the CT presets' opacities are per
+  /// millimetre), else h, so that the same samples render alike in metres, millimetres or microns
+  /// (ParaView likewise scales its unit distance to the data).
+  static double PresetUnitDistance(double lo, double hi, double h);
+  /// Mean sample spacing of a data set: an image's geometric mean spacing over its axes of more
+  /// than one sample; for other data the field "SourceSpacing" (which the reducer writes, so a
+  /// reduced mesh renders as its volume did), else MeanSpacing of its bounds and points.
+  static double SampleSpacing(vtkDataSet* data);
+  /// (volume of the box over its non-flat axes / points)^(1 / those axes); 1 when undefined.
+  static double MeanSpacing(const double extent[3], double points);
   /// A text file, one node per line: "scalar r g b opacity" ('#' comments; optional first line
   /// "unit-distance U"). Throws art::Error naming the file and line for anything malformed.
   static TransferFunction FromFile(const std::string& path);
