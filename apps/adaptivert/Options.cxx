@@ -1,5 +1,6 @@
 #include "Options.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -102,7 +103,9 @@ double Options::GetDouble(const std::string& name) const
   const std::string v = Get(name);
   char* end = nullptr;
   const double d = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0')
+  // strtod takes "nan", which no option means and which slips past range checks written as
+  // comparisons (--azimuth nan crashed the voxel reference).
+  if (v.empty() || *end != '\0' || std::isnan(d))
   {
     throw UsageError("option '--" + name + "' expects a number, got '" + v + "'");
   }

@@ -1,4 +1,5 @@
 #include "Camera.h"
+#include "Error.h"
 
 #include <vtkCamera.h>
 #include <vtkMath.h>
@@ -44,6 +45,11 @@ Camera Camera::FromVTK(vtkCamera* cam, int width, int height)
 
 void Camera::Frame(vtkCamera* cam, const Box3& b, double azimuth, double elevation, double zoom)
 {
+  // A non-finite angle turns every ray into NaN: an image of nothing, or a crash in a caster.
+  if (!std::isfinite(azimuth) || !std::isfinite(elevation) || !(zoom > 0) || !std::isfinite(zoom))
+  {
+    throw Error("camera azimuth and elevation must be finite and zoom positive and finite");
+  }
   const Vec3 centre = b.Center();
   const double radius = std::max(0.5 * b.Diagonal(), 1e-12);
   const Vec3 dir = Normalize(Vec3(cam->GetDirectionOfProjection()));

@@ -1,4 +1,5 @@
 #include "Camera.h"
+#include "Error.h"
 
 #include <vtkCamera.h>
 #include <vtkNew.h>
@@ -69,4 +70,22 @@ TEST(Camera, FrameShowsTheWholeBox)
     const Vec3 d = Normalize(c - cam.Position());
     EXPECT_LT(std::acos(Dot(d, cam.Forward())), half + 1e-9);
   }
+}
+
+// A NaN or infinite angle (from a script or a mistyped option) made every ray NaN: the voxel
+// reference crashed and the surface tracer wrote a blank image. Framing refuses them.
+TEST(Camera, FrameRefusesNonFiniteAnglesAndZoom)
+{
+  const art::Box3 box(Vec3(0, 0, 0), Vec3(1, 2, 3));
+  const double bad[] = { std::nan(""), INFINITY, -INFINITY };
+  for (double v : bad)
+  {
+    vtkNew<vtkCamera> vc;
+    EXPECT_THROW(art::Camera::Frame(vc, box, v, 0, 1), art::Error);
+    EXPECT_THROW(art::Camera::Frame(vc, box, 0, v, 1), art::Error);
+    EXPECT_THROW(art::Camera::Frame(vc, box, 0, 0, v), art::Error);
+  }
+  vtkNew<vtkCamera> vc;
+  EXPECT_THROW(art::Camera::Frame(vc, box, 0, 0, 0), art::Error);
+  EXPECT_NO_THROW(art::Camera::Frame(vc, box, 720, -45, 3));
 }
