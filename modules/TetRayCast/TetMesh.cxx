@@ -380,6 +380,28 @@ TetMesh::Plane TetMesh::FacePlane(std::size_t t, int f) const
   return { n, Dot(n, p0) };
 }
 
+void TetMesh::CheckFullResolutionFits(long long tets, double machineBytes, const std::string& file)
+{
+  if (tets >= (1LL << 29))
+  {
+    throw Error("volume too large for full-resolution tets (" + std::to_string(tets) +
+        " tets, at most 2^29); reduce it first (--tets N or --max-error E)",
+      file);
+  }
+  // About 160 bytes per tet with its share of the vertices (measured: 660 MB for the 4.3 M tets of
+  // the 128 x 128 x 54 CT). Past the machine's memory the build would be killed without a word.
+  const double need = 160.0 * tets;
+  if (machineBytes > 0 && need > 0.8 * machineBytes)
+  {
+    char msg[200];
+    std::snprintf(msg, sizeof msg,
+      "full-resolution tets of this volume (%lld) need about %.3g GB, more than this machine's %.3g GB allows; "
+      "reduce it first (--tets N or --max-error E)",
+      tets, need / 1e9, machineBytes / 1e9);
+    throw Error(msg, file);
+  }
+}
+
 TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
 {
   vtkDataArray* s = image ? image->GetPointData()->GetScalars() : nullptr;
@@ -394,26 +416,8 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
   }
   const long long np = static_cast<long long>(d[0]) * d[1] * d[2];
   const long long nt = 5 * (d[0] - 1LL) * (d[1] - 1) * (d[2] - 1);
-  if (nt >= (1LL << 29))
-  {
-    throw Error("volume too large for full-resolution tets (" + std::to_string(nt) +
-        " tets, at most 2^29); reduce it first (--tets N or --max-error E)",
-      file);
-  }
-  // About 160 bytes per tet with its share of the vertices (measured: 660 MB for the 4.3 M tets of
-  // the 128 x 128 x 54 CT). Past the machine's memory the build would be killed without a word.
-  const double needGB = 160.0 * nt / 1e9;
   const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
-  const double haveGB = pages > 0 && pageSize > 0 ? double(pages) * pageSize / 1e9 : 0.0;
-  if (haveGB > 0 && needGB > 0.8 * haveGB)
-  {
-    char msg[200];
-    std::snprintf(msg, sizeof msg,
-      "full-resolution tets of this volume (%lld) need about %.0f GB, more than this machine's %.0f GB allows; "
-      "reduce it first (--tets N or --max-error E)",
-      nt, needGB, haveGB);
-    throw Error(msg, file);
-  }
+  CheckFullResolutionFits(nt, pages > 0 && pageSize > 0 ? double(pages) * pageSize : 0.0, file);
   std::vector<Vec3> pts(np);
   std::vector<double> val(np);
   const int* e = image->GetExtent(); // indices start at the extent's first corner

@@ -35,12 +35,15 @@ public:
   /// overlapping tets on both sides of a face).
   TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vector<std::array<int, 4>> tets);
 
-  /// Any vtkUnstructuredGrid with point scalars (the active ones, or `array` by name). Cells
-  /// other than tets are tetrahedralised first (vtkDataSetTriangleFilter); `note` says so.
   /// Full-resolution tets of a voxel volume: every voxel cell split into 5 tets (alternating, so
   /// the face diagonals match), point scalars = the voxel values (component 0).
   static TetMesh FromImage(vtkImageData* image, const std::string& file = {});
+  /// Throws art::Error naming `file` when full-resolution tets would pass 2^29 or need more than
+  /// 80% of machineBytes (FromImage passes the machine's memory; 0 = unknown, not checked).
+  static void CheckFullResolutionFits(long long tets, double machineBytes, const std::string& file);
 
+  /// Any vtkUnstructuredGrid with point scalars (the active ones, or `array` by name). Cells
+  /// other than tets are tetrahedralised first (vtkDataSetTriangleFilter); `note` says so.
   static TetMesh FromVTK(vtkUnstructuredGrid* grid, const std::string& array = {},
     std::string* note = nullptr, const std::string& file = {});
 

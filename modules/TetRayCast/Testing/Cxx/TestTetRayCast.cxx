@@ -593,3 +593,25 @@ TEST(TransferFunction, SampleSpacingOfMeshes)
   const double none[3] = { 0, 0, 0 };
   EXPECT_EQ(TransferFunction::MeanSpacing(none, 1), 1.0);
 }
+
+// Full-resolution tets that would not fit are refused before anything is built, naming the file
+// and the memory (the CT head's 4.3 M tets need about 0.7 GB).
+TEST(TetMesh, FullResolutionMemoryGuard)
+{
+  const long long ctHead = 5LL * 127 * 127 * 53;
+  EXPECT_NO_THROW(TetMesh::CheckFullResolutionFits(ctHead, 24e9, "head.mha"));
+  EXPECT_NO_THROW(TetMesh::CheckFullResolutionFits(ctHead, 0.0, "head.mha")); // memory unknown
+  try
+  {
+    TetMesh::CheckFullResolutionFits(ctHead, 0.5e9, "head.mha");
+    FAIL() << "0.7 GB of tets accepted on a 0.5 GB machine";
+  }
+  catch (const Error& e)
+  {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("head.mha"), std::string::npos) << what;
+    EXPECT_NE(what.find("need about 0.684 GB, more than this machine's 0.5 GB"), std::string::npos) << what;
+    EXPECT_NE(what.find("--tets"), std::string::npos) << what;
+  }
+  EXPECT_THROW(TetMesh::CheckFullResolutionFits(1LL << 29, 0.0, "big.mha"), Error);
+}
