@@ -4,6 +4,7 @@
 #include "Error.h"
 #include "MetaImageCheck.h"
 #include "NrrdDirection.h"
+#include "ObjCheck.h"
 #include "PlyCheck.h"
 
 #include <vtkAlgorithm.h>
@@ -373,6 +374,7 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   }
   else if (e == ".obj")
   {
+    CheckObj(path);
     reader = FileReader<vtkOBJReader>(path);
   }
   else if (e == ".stl")

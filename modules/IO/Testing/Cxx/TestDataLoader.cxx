@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
 
 namespace
@@ -65,6 +66,27 @@ TEST(DataLoader, BadInputs)
   ExpectError(Bad + "empty.vtp", "file is empty");
   ExpectError(Bad + "garbage.vti", "cannot read");
   ExpectError(Bad.substr(0, Bad.size() - 1), "no readable DICOM");
+}
+
+// VTK 9.1's OBJ reader trusts face indices: an out-of-range texture coordinate corrupted the heap
+// (abort), an out-of-range normal gave garbage normals. Both are checked first; relative
+// (negative) and absent indices stay valid.
+TEST(DataLoader, ObjFaceIndicesAreChecked)
+{
+  ExpectError(Bad + "texcoord-out-of-range.obj", "line 11: a face refers to texture coordinate 5 of 4 defined");
+  ExpectError(Bad + "normal-out-of-range.obj", "line 6: a face refers to normal 3 of 1 defined");
+  const std::string good = std::string(ART_TEST_OUTPUT) + "/relative-indices.obj";
+  {
+    std::ofstream f(good);
+    f << "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf -3//-1 -2//1 3//1\nv 1 1 0\nf 2//1 -1//-1 3//1\n";
+  }
+  auto pd = art::LoadSurface(good);
+  EXPECT_EQ(pd->GetNumberOfPolys(), 2);
+  {
+    std::ofstream f(good);
+    f << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n";
+  }
+  ExpectError(good, "line 4: a face refers to vertex -4 of 3 defined");
 }
 
 TEST(DataLoader, WrongKindForTheCall)
