@@ -6,6 +6,7 @@
 #include "NrrdDirection.h"
 #include "ObjCheck.h"
 #include "PlyCheck.h"
+#include "StlCheck.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkAppendFilter.h>
@@ -379,6 +380,7 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   }
   else if (e == ".stl")
   {
+    CheckStl(path);
     reader = FileReader<vtkSTLReader>(path);
   }
   else if (e == ".vtk")

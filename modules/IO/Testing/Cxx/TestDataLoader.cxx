@@ -2,11 +2,15 @@
 #include "Error.h"
 
 #include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkSTLWriter.h>
+#include <vtkSphereSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -93,4 +97,29 @@ TEST(DataLoader, WrongKindForTheCall)
 {
   EXPECT_THROW(art::LoadSurface(Data + "ct-head-128.mha"), art::Error);
   EXPECT_THROW(art::LoadVolume(Data + "am_underworks.ply"), art::Error);
+}
+
+// VTK 9.1 reads a truncated binary STL's first triangles without a word (and random bytes as
+// triangles 1e38 wide); the triangle count in the header is checked against the file's size.
+TEST(DataLoader, TruncatedBinaryStl)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  const std::string full = std::string(ART_TEST_OUTPUT) + "/sphere-binary.stl";
+  vtkNew<vtkSTLWriter> w;
+  w->SetInputConnection(sphere->GetOutputPort());
+  w->SetFileTypeToBinary();
+  w->SetFileName(full.c_str());
+  ASSERT_TRUE(w->Write());
+  const long long polys = sphere->GetOutput()->GetNumberOfPolys();
+  EXPECT_EQ(art::LoadSurface(full)->GetNumberOfPolys(), polys);
+  const std::string cut = std::string(ART_TEST_OUTPUT) + "/sphere-truncated.stl";
+  std::filesystem::copy_file(full, cut, std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::resize_file(cut, 1000);
+  ExpectError(cut, "the header counts " + std::to_string(polys) + " triangles");
+  // A text STL is still VTK's to read.
+  w->SetFileTypeToASCII();
+  w->SetFileName(cut.c_str());
+  ASSERT_TRUE(w->Write());
+  EXPECT_EQ(art::LoadSurface(cut)->GetNumberOfPolys(), polys);
 }
