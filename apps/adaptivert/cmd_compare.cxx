@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace
 {
@@ -27,6 +28,24 @@ int Run(const cli::Options& o)
     throw cli::UsageError("needs exactly two images A B");
   }
   const std::string pa = o.Positional()[0], pb = o.Positional()[1];
+  if (o.Has("diff"))
+  {
+    const double gain = o.GetDouble("gain");
+    if (!(gain > 0) || !std::isfinite(gain))
+    {
+      throw cli::UsageError("--gain expects a positive factor, got '" + o.Get("gain") + "'");
+    }
+    // The difference image replaced an input given as --diff (the baseline of a regression check).
+    std::error_code ec;
+    for (const std::string& in : { pa, pb })
+    {
+      if (std::filesystem::equivalent(in, o.Get("diff"), ec) ||
+        std::filesystem::weakly_canonical(in, ec) == std::filesystem::weakly_canonical(o.Get("diff"), ec))
+      {
+        throw cli::UsageError("--diff " + o.Get("diff") + " is one of the images compared; give another file");
+      }
+    }
+  }
   const art::Image a = art::ReadImage(pa), b = art::ReadImage(pb);
   if (a.Width() != b.Width() || a.Height() != b.Height())
   {
