@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <set>
 #include <fstream>
 
 namespace fs = std::filesystem;
@@ -142,10 +143,17 @@ BatchJob LoadBatchJob(const std::string& path)
     }
     const bool withReference = j.contains("reference");
     std::vector<BatchTask> refs, frames;
+    std::set<std::string> stems;
     for (const auto& d : j["datasets"])
     {
       const std::string ds = (base / d.get<std::string>()).lexically_normal().string();
-      const std::string stem = fs::path(ds).stem().string();
+      // Frames are named after the file; two files of one name (a/ct.mha, b/ct.mha) shared their
+      // frames, and the second was never rendered. Later ones get -2, -3, .. (stable per job file).
+      std::string stem = fs::path(ds).stem().string();
+      for (int n = 2; !stems.insert(stem).second; ++n)
+      {
+        stem = fs::path(ds).stem().string() + "-" + std::to_string(n);
+      }
       art::DataKind dsKind;
       const art::DataKind* kind = nullptr;
       try
