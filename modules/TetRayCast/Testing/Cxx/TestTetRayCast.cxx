@@ -299,7 +299,33 @@ TEST(TetMesh, FromVTKAndBadMeshes)
   }
   catch (const Error& e)
   {
-    EXPECT_NE(std::string(e.what()).find("three.vtu: inconsistent neighbours"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("three.vtu: inconsistent neighbours: a face of tet"), std::string::npos)
+      << e.what();
+    EXPECT_NE(std::string(e.what()).find("is shared by 3 tets"), std::string::npos) << e.what();
+  }
+  // Two tets on the same side of their shared face overlap.
+  vtkNew<vtkUnstructuredGrid> over;
+  vtkNew<vtkPoints> op;
+  for (int i = 0; i < 4; ++i)
+    op->InsertNextPoint(pts->GetPoint(i));
+  op->InsertNextPoint(0.1, 0.1, 0.1); // inside tet (0, 1, 2, 3)
+  over->SetPoints(op);
+  vtkIdType inner[4] = { 1, 2, 3, 4 };
+  over->InsertNextCell(VTK_TETRA, 4, t0);
+  over->InsertNextCell(VTK_TETRA, 4, inner);
+  vtkNew<vtkDoubleArray> os;
+  for (int i = 0; i < 5; ++i)
+    os->InsertNextValue(i);
+  over->GetPointData()->SetScalars(os);
+  try
+  {
+    TetMesh::FromVTK(over, {}, nullptr, "over.vtu");
+    FAIL() << "overlapping tets accepted";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("over.vtu: inconsistent neighbours: tets 0 and 1 lie on the same side"),
+      std::string::npos) << e.what();
   }
   // A hexahedron is tetrahedralised with a note.
   vtkNew<vtkUnstructuredGrid> hex;
