@@ -81,6 +81,8 @@ void Declare(cli::Options& o)
     "0.01%,0.03%,0.05%,0.1%,0.2%,1%");
   o.Add("red-timed-tets", 0, "N", "reduction: also time a separate run to N tets (0: skip)", "200000");
   o.Add("red-no-quadric", 0, "", "reduction: skip VTK's quadric decimation (slow on big volumes)");
+  o.Add("red-refinement", 0, "bisection|edge",
+    "reduction: newest-vertex bisection, or halving the edge that removes the most error", "bisection");
 }
 
 struct Row
@@ -89,6 +91,7 @@ struct Row
   // ours
   long long tets = 0, vertices = 0;
   double rms = 0, max = 0;
+  double minDihedral = 0, minRadiusRatio = 0, meanRadiusRatio = 0;
   cli::BenchStats seconds;
   // quadric decimation at our tet count
   long long qTets = 0, qVertices = 0, qUncovered = 0, qInverted = 0;
@@ -127,7 +130,14 @@ int Run(const cli::Options& o)
     in.c_str(), volume.Dims[0], volume.Dims[1], volume.Dims[2], voxels, levels.size(), runs, art::GetThreadCount());
 
   // Ours: one nested run emits every level; each level's time is the build time up to it.
+  const std::string refinement = o.Get("red-refinement");
+  if (refinement != "bisection" && refinement != "edge")
+  {
+    throw cli::UsageError("--red-refinement is bisection or edge, got '" + refinement + "'");
+  }
   art::ReducerOptions opt;
+  opt.Refine = refinement == "edge" ? art::ReducerOptions::Refinement::EdgeSplit
+                                    : art::ReducerOptions::Refinement::Bisection;
   opt.Levels = levels;
   std::vector<Row> rows(levels.size());
   std::vector<std::vector<double>> times(levels.size());
@@ -157,7 +167,12 @@ int Run(const cli::Options& o)
     w.rms = m.Rms;
     w.max = m.Max;
     w.seconds = cli::Summarise(times[i]);
-    std::fprintf(stderr, "  ours     %8lld tets  RMS %8.3f  max %8.1f  %.2f s\n", w.tets, w.rms, w.max, w.seconds.median);
+    const art::QualityReport q = art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets());
+    w.minDihedral = q.MinDihedralDegrees;
+    w.minRadiusRatio = q.MinRadiusRatio;
+    w.meanRadiusRatio = q.MeanRadiusRatio;
+    std::fprintf(stderr, "  ours     %8lld tets  RMS %8.3f  max %8.1f  %.2f s  min dihedral %.1f deg  radius ratio min %.3f mean %.3f\n",
+      w.tets, w.rms, w.max, w.seconds.median, w.minDihedral, w.minRadiusRatio, w.meanRadiusRatio);
   }
   const cli::BenchStats ourPeak = cli::Summarise(peaks);
 
@@ -228,6 +243,7 @@ int Run(const cli::Options& o)
     std::vector<double> t, p;
     art::ReducerOptions topt;
     topt.TargetTets = timedTets;
+    topt.Refine = opt.Refine;
     for (int r = 0; r <= runs; ++r)
     {
       const long long base = StatusKB("VmRSS");
@@ -255,7 +271,8 @@ int Run(const cli::Options& o)
     cli::Json j;
     j.Set("level_tets", w.level).Set("level_percent", 100.0 * w.level / voxels)
       .Set("tets", w.tets).Set("vertices", w.vertices).Set("rms", w.rms).Set("max", w.max)
-      .Set("seconds", w.seconds.median).Set("seconds_min", w.seconds.lo).Set("seconds_max", w.seconds.hi)
+      .Set("min_dihedral_degrees", w.minDihedral).Set("min_radius_ratio", w.minRadiusRatio)
+      .Set("mean_radius_ratio", w.meanRadiusRatio).Set("seconds", w.seconds.median).Set("seconds_min", w.seconds.lo).Set("seconds_max", w.seconds.hi)
       .Set("uniform_vertices", w.uVertices).Set("uniform_tets", w.uTets).Set("uniform_rms", w.uRms)
       .Set("uniform_max", w.uMax).Set("uniform_seconds", w.uSeconds.median);
     if (quadric)
@@ -270,7 +287,7 @@ int Run(const cli::Options& o)
   cli::Json js;
   js.Set("benchmark", "reduction").Set("input", in).Set("dims",
       std::vector<double>{ double(volume.Dims[0]), double(volume.Dims[1]), double(volume.Dims[2]) })
-    .Set("voxels", voxels).Set("scalar_range", std::vector<double>{ volume.Range[0], volume.Range[1] })
+    .Set("refinement", refinement).Set("voxels", voxels).Set("scalar_range", std::vector<double>{ volume.Range[0], volume.Range[1] })
     .Set("machine", cpu).Set("hardware_threads", static_cast<long long>(std::thread::hardware_concurrency()))
     .Set("threads", art::GetThreadCount()).Set("date", date).Set("commit", commit).Set("runs", runs)
     .Set("ours_peak_mb", ourPeak.median).Set("ours_peak_mb_min", ourPeak.lo).Set("ours_peak_mb_max", ourPeak.hi)
@@ -290,9 +307,9 @@ int Run(const cli::Options& o)
   md << "# Reduction benchmark\n\n" << in << ": " << volume.Dims[0] << " x " << volume.Dims[1] << " x "
      << volume.Dims[2] << " = " << voxels << " voxels, range " << volume.Range[0] << " .. " << volume.Range[1]
      << " (HU). " << cpu << ", " << art::GetThreadCount() << " threads, commit " << commit << ", " << date
-     << ". Times: median of " << runs << " runs after a warm-up [min-max]; ours are cumulative over one nested run.\n\n";
-  md << "| level | tets | verts | ours RMS | ours max | ours s | quadric tets | quadric RMS | quadric RMS covered | quadric max | quadric s | uniform verts | uniform RMS | uniform max | RMS vs quadric | RMS vs uniform |\n";
-  md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+     << ". Refinement: " << refinement << ". Times: median of " << runs << " runs after a warm-up [min-max]; ours are cumulative over one nested run.\n\n";
+  md << "| level | tets | verts | ours RMS | ours max | ours s | quadric tets | quadric RMS | quadric RMS covered | quadric max | quadric s | uniform verts | uniform RMS | uniform max | RMS vs quadric | RMS vs uniform | min dihedral | radius ratio min / mean |\n";
+  md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& w : rows)
   {
     char q[300] = "| - | - | - | - | - ";
@@ -302,10 +319,10 @@ int Run(const cli::Options& o)
         w.qCoveredRms, 100.0 - 100.0 * w.qUncovered / voxels, w.qMax, w.qSeconds);
     }
     std::snprintf(line, sizeof line,
-      "| %.2f%% | %lld | %lld | %.2f | %.1f | %.2f [%.2f-%.2f] %s| %lld | %.2f | %.1f | %s | %.2f |\n",
+      "| %.2f%% | %lld | %lld | %.2f | %.1f | %.2f [%.2f-%.2f] %s| %lld | %.2f | %.1f | %s | %.2f | %.1f deg | %.3f / %.3f |\n",
       100.0 * w.level / voxels, w.tets, w.vertices, w.rms, w.max, w.seconds.median, w.seconds.lo, w.seconds.hi, q,
       w.uVertices, w.uRms, w.uMax, quadric ? (std::to_string(w.rms / w.qRms).substr(0, 4)).c_str() : "-",
-      w.rms / w.uRms);
+      w.rms / w.uRms, w.minDihedral, w.minRadiusRatio, w.meanRadiusRatio);
     md << line;
   }
   std::snprintf(line, sizeof line, "\nOurs: process peak memory %.0f MB [%.0f-%.0f] (input volume included) for the whole nested run.", ourPeak.median,

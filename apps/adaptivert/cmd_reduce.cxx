@@ -52,6 +52,9 @@ void Declare(cli::Options& o)
   o.Add("levels", 0, "LIST", "also write nested levels from the same run, e.g. 0.01%,0.1%,5000: OUT_<n>.vtu");
   o.Add("refine-fraction", 0, "F", "tet growth per refinement level", "0.2");
   o.Add("tolerance", 0, "T", "conjugate-gradient relative residual", "1e-8");
+  o.Add("refinement", 0, "bisection|edge",
+    "bisection: newest-vertex, near-regular tets; edge: halve the edge that removes the most error "
+    "(thin tets along sharp surfaces)", "bisection");
   o.Add("tf", 0, "NAME|FILE",
     "reduce for this transfer function's opacity (a preset, e.g. ct-skin-bone, or a file of "
     "'scalar r g b opacity' lines): tets go where opacity changes");
@@ -80,6 +83,13 @@ int Run(const cli::Options& o)
     throw cli::UsageError("--metric is rms or max, got '" + metric + "'");
   }
   opt.ErrorMetric = metric == "max" ? art::ReducerOptions::Metric::Max : art::ReducerOptions::Metric::RMS;
+  const std::string refinement = o.Get("refinement");
+  if (refinement != "bisection" && refinement != "edge")
+  {
+    throw cli::UsageError("--refinement is bisection or edge, got '" + refinement + "'");
+  }
+  opt.Refine = refinement == "edge" ? art::ReducerOptions::Refinement::EdgeSplit
+                                    : art::ReducerOptions::Refinement::Bisection;
   opt.RefineFraction = o.GetDouble("refine-fraction");
   opt.SolverTolerance = o.GetDouble("tolerance");
   if (!(opt.RefineFraction > 0.0 && opt.RefineFraction <= 4.0) || !(opt.SolverTolerance > 0 && opt.SolverTolerance < 1))

@@ -16,6 +16,7 @@ void BisectionMesh::InitKuhn(const int dims[3], const int cubes[3])
   Gen.clear();
   Versions.clear();
   VertexTets.clear();
+  EdgeSplits = false;
   int n[3];
   std::vector<int64_t> ticks[3];
   for (int a = 0; a < 3; ++a)
@@ -88,6 +89,84 @@ double BisectionMesh::RefinementEdgeLength2(int t) const
   return dx * dx + dy * dy + dz * dz;
 }
 
+const int BisectionMesh::EdgeCorners[6][2] = { { 0, 1 }, { 0, 2 }, { 0, 3 }, { 1, 2 }, { 1, 3 }, { 2, 3 } };
+
+double BisectionMesh::EdgeLength2(int a, int b) const
+{
+  const LatticePoint &p = Verts[a], &q = Verts[b];
+  const double s = 1.0 / static_cast<double>(Scale);
+  const double dx = (q.x - p.x) * s, dy = (q.y - p.y) * s, dz = (q.z - p.z) * s;
+  return dx * dx + dy * dy + dz * dz;
+}
+
+bool BisectionMesh::CanSplitEdge(int a, int b) const
+{
+  const LatticePoint &p = Verts[a], &q = Verts[b];
+  return ((p.x + q.x) % 2 == 0) && ((p.y + q.y) % 2 == 0) && ((p.z + q.z) % 2 == 0);
+}
+
+void BisectionMesh::SplitEdge(int a, int b, std::vector<int>& touched)
+{
+  if (a == b || !CanSplitEdge(a, b))
+  {
+    throw Error("refinement reached the lattice resolution");
+  }
+  std::vector<int> star;
+  TetsWithEdge(a, b, star);
+  if (star.empty())
+  {
+    throw Error("internal: split of an edge that is in no tet");
+  }
+  EdgeSplits = true;
+  const LatticePoint &p = Verts[a], &q = Verts[b];
+  const int mid = static_cast<int>(Verts.size());
+  Verts.push_back({ (p.x + q.x) / 2, (p.y + q.y) / 2, (p.z + q.z) / 2 });
+  Parent.push_back({ std::min(a, b), std::max(a, b) });
+  VertexTets.emplace_back();
+  for (int t : star)
+  {
+    // Child 1 (slot t) keeps a, b -> mid; child 2 (new slot) keeps b, a -> mid. Replacing one
+    // end of the edge by its midpoint halves the volume and keeps its sign.
+    const std::array<int, 4> x = Tets[t];
+    std::array<int, 4> c1 = x, c2 = x;
+    for (int i = 0; i < 4; ++i)
+    {
+      if (x[i] == b)
+      {
+        c1[i] = mid;
+      }
+      if (x[i] == a)
+      {
+        c2[i] = mid;
+      }
+    }
+    const int n = static_cast<int>(Tets.size());
+    Tets[t] = c1;
+    ++Gen[t];
+    ++Versions[t];
+    Tets.push_back(c2);
+    Tag.push_back(Tag[t]);
+    Gen.push_back(Gen[t]);
+    Versions.push_back(0);
+    for (int v : x)
+    {
+      auto& lst = VertexTets[v];
+      if (v == b)
+      {
+        *std::find(lst.begin(), lst.end(), t) = n;
+      }
+      else if (v != a)
+      {
+        lst.push_back(n);
+      }
+    }
+    VertexTets[mid].push_back(t);
+    VertexTets[mid].push_back(n);
+    touched.push_back(t);
+    touched.push_back(n);
+  }
+}
+
 void BisectionMesh::TetsWithEdge(int a, int b, std::vector<int>& out) const
 {
   out.clear();
@@ -104,6 +183,10 @@ void BisectionMesh::TetsWithEdge(int a, int b, std::vector<int>& out) const
 
 void BisectionMesh::Refine(int t, std::vector<int>& touched)
 {
+  if (EdgeSplits)
+  {
+    throw Error("internal: newest-vertex bisection after free edge splits");
+  }
   RefineRecursive(t, touched, 0);
 }
 

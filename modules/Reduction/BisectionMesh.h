@@ -1,6 +1,7 @@
 // BisectionMesh: a conforming tetrahedral mesh of a box refined by newest-vertex bisection.
 // Kuhn/Freudenthal split of a coarse grid of boxes (6 tets each), then Maubach's tagged bisection
-// (Maubach 1995; Arnold, Mukherjee & Pouly 2000) with recursive conforming closure.
+// (Maubach 1995; Arnold, Mukherjee & Pouly 2000) with recursive conforming closure, or, instead,
+// free edge bisection: any chosen edge halved together with its whole star (always conforming).
 #ifndef art_BisectionMesh_h
 #define art_BisectionMesh_h
 
@@ -53,9 +54,22 @@ public:
   /// Squared length of t's refinement edge in voxel index units.
   double RefinementEdgeLength2(int t) const;
 
+  /// The six edges of a tet as pairs of corner positions 0..3.
+  static const int EdgeCorners[6][2];
+  /// Squared length of the edge (a, b) in voxel index units.
+  double EdgeLength2(int a, int b) const;
+  /// True when the midpoint of (a, b) lies on the lattice.
+  bool CanSplitEdge(int a, int b) const;
+  /// Halves the edge (a, b) (vertex ids) and every tet around it at its midpoint: conforming
+  /// whatever edge is chosen, and each child keeps its parent's orientation. Replaced and new tet
+  /// slots are appended to `touched`. Once used, Refine (Maubach's tags) is refused: the tags no
+  /// longer describe a compatible bisection. Throws when the midpoint is off the lattice.
+  void SplitEdge(int a, int b, std::vector<int>& touched);
+  /// Tets that have both a and b as corners, ascending.
+  void TetsWithEdge(int a, int b, std::vector<int>& out) const;
+
 private:
   std::array<int, 2> RefinementEdge(int t) const;
-  void TetsWithEdge(int a, int b, std::vector<int>& out) const;
   void Bisect(int t, int mid, std::vector<int>& touched);
   void RefineRecursive(int t, std::vector<int>& touched, int depth);
 
@@ -66,6 +80,7 @@ private:
   std::vector<uint16_t> Gen;
   std::vector<uint32_t> Versions;
   std::vector<std::vector<int>> VertexTets; // tets around each vertex, for edge patches
+  bool EdgeSplits = false;                  // SplitEdge was used: the Maubach tags are void
 };
 } // namespace art
 

@@ -287,6 +287,66 @@ void LeastSquaresFit::SquaredErrors(const BisectionMesh& mesh, const std::vector
   });
 }
 
+void LeastSquaresFit::EdgeMoments(const BisectionMesh& mesh, const std::vector<int>& tets,
+  std::vector<EdgeSplitMoments>& out, const std::vector<double>* fit) const
+{
+  out.resize(static_cast<size_t>(mesh.NumberOfTets()));
+  const bool haveFit = Imp && fit && !fit->empty();
+  ForEachRange(static_cast<long long>(tets.size()), 64, [&](long long b, long long e, Counters&) {
+    for (long long i = b; i < e; ++i)
+    {
+      const int t = tets[i];
+      LatticePoint P[4];
+      Corners(mesh, t, P);
+      TetRaster r;
+      r.Setup(P);
+      double c[4] = { 0, 0, 0, 0 };
+      for (int a = 0; haveFit && a < 4; ++a)
+      {
+        c[a] = (*fit)[mesh.Tet(t)[a]];
+      }
+      EdgeSplitMoments m;
+      bool first = true;
+      auto pass = [&](const auto* values) {
+        r.ForEachVoxel(Volume.Dims, [&](long long idx, const double* l) {
+          const double f = values[idx];
+          if (first)
+          {
+            m.F0 = f;
+            first = false;
+          }
+          double w = 1.0;
+          if (Imp)
+          {
+            w = Imp->Weight(idx, f, haveFit ? c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3] : f);
+          }
+          const double wd = w * (f - m.F0);
+          for (int k = 0; k < 6; ++k)
+          {
+            const double phi = 2.0 * std::min(l[BisectionMesh::EdgeCorners[k][0]], l[BisectionMesh::EdgeCorners[k][1]]);
+            const double wphi = w * phi;
+            m.P[k] += wd * phi;
+            m.Q[k] += wphi * phi;
+            for (int q = 0; q < 4; ++q)
+            {
+              m.R[k][q] += wphi * l[q];
+            }
+          }
+        });
+      };
+      if (Volume.DoubleValues)
+      {
+        pass(Volume.Double.data());
+      }
+      else
+      {
+        pass(Volume.Float.data());
+      }
+      out[t] = m;
+    }
+  });
+}
+
 VoxelErrorReport LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const std::vector<double>& x) const
 {
   const int nt = mesh.NumberOfTets();

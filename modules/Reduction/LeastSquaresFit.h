@@ -34,6 +34,24 @@ struct VoxelErrorReport
   double WeightedRms = 0, WeightedMax = 0; ///< sqrt(mean Error2), sqrt(max Error2)
 };
 
+/// For edge choice, per edge e of a tet (BisectionMesh::EdgeCorners), over the voxels it owns:
+/// with phi_e = 2 min(lambda_a, lambda_b), the hat of e's midpoint once e is halved,
+/// P = sum w (f - F0) phi_e, R_c = sum w lambda_c phi_e and Q = sum w phi_e^2. They do not depend
+/// on the fit (gathered once per tet, as TetMoments): at corner values x the correlation of the
+/// residual with the hat is S = P - sum_c (x_c - F0) R_c, and, summed over e's star, S^2 / Q is the
+/// squared error the split removes when the new vertex alone takes its best value.
+struct EdgeSplitMoments
+{
+  double F0 = 0;
+  double P[6] = {}, Q[6] = {};
+  double R[6][4] = {};
+  /// S of edge e at the corner values c (the fit at this tet's four corners).
+  double S(int e, const double c[4]) const
+  {
+    return P[e] - (c[0] - F0) * R[e][0] - (c[1] - F0) * R[e][1] - (c[2] - F0) * R[e][2] - (c[3] - F0) * R[e][3];
+  }
+};
+
 class ADAPTIVERTREDUCTION_EXPORT LeastSquaresFit
 {
 public:
@@ -58,6 +76,11 @@ public:
   /// Exact per-tet RMS and max |f - fit| over the voxels each tet owns, and the global plain and
   /// weighted errors (one pass over the voxels).
   VoxelErrorReport VoxelErrors(const BisectionMesh& mesh, const std::vector<double>& x) const;
+
+  /// EdgeSplitMoments of the listed tets into out[t] (sized to the mesh). With an importance,
+  /// `fit` (vertex values, Extend-ed) is where the weights are taken, as in UpdateMoments.
+  void EdgeMoments(const BisectionMesh& mesh, const std::vector<int>& tets, std::vector<EdgeSplitMoments>& out,
+    const std::vector<double>* fit = nullptr) const;
 
   const TetMoments& Moments(int t) const { return Mom[t]; }
   static int PackedIndex(int a, int b);

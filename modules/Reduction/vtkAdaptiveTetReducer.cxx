@@ -106,6 +106,8 @@ int vtkAdaptiveTetReducer::RequestData(
   opt.ErrorRelative = this->ErrorRelative;
   opt.RefineFraction = this->RefineFraction;
   opt.SolverTolerance = this->SolverTolerance;
+  opt.Refine = this->Refinement == EDGE_SPLIT ? art::ReducerOptions::Refinement::EdgeSplit
+                                              : art::ReducerOptions::Refinement::Bisection;
   opt.ImportanceFloor = this->ImportanceFloor;
   opt.ImportanceRadius = this->ImportanceRadius;
   if (this->ScalarOpacity)
@@ -184,6 +186,7 @@ void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ErrorRelative: " << this->ErrorRelative << "\n";
   os << indent << "RefineFraction: " << this->RefineFraction << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
+  os << indent << "Refinement: " << (this->Refinement == EDGE_SPLIT ? "EDGE_SPLIT" : "BISECTION") << "\n";
   os << indent << "Levels: " << this->Levels.size() << "\n";
   os << indent << "RMSError: " << this->RMSError << "\n";
   os << indent << "MaxError: " << this->MaxError << "\n";

@@ -78,6 +78,22 @@ public:
   vtkSetClampMacro(SolverTolerance, double, 1e-15, 1e-2);
   vtkGetMacro(SolverTolerance, double);
 
+  enum RefinementModes
+  {
+    BISECTION = 0,
+    EDGE_SPLIT = 1
+  };
+  /**
+   * How a tet chosen for refinement is cut: BISECTION (default), newest-vertex bisection with
+   * near-isotropic shapes; EDGE_SPLIT, the tet's edge whose halving removes the most error is
+   * halved with every tet around it (anisotropic tets along sharp surfaces; lower error per tet
+   * on a CT, much flatter tets).
+   */
+  vtkSetClampMacro(Refinement, int, BISECTION, EDGE_SPLIT);
+  vtkGetMacro(Refinement, int);
+  void SetRefinementToBisection() { this->SetRefinement(BISECTION); }
+  void SetRefinementToEdgeSplit() { this->SetRefinement(EDGE_SPLIT); }
+
   /**
    * Nested budgets (tet counts) emitted on output port 1 from the same run.
    */
@@ -133,6 +149,7 @@ protected:
   bool ErrorRelative = false;
   double RefineFraction = 0.2;
   double SolverTolerance = 1e-8;
+  int Refinement = BISECTION;
   std::vector<vtkIdType> Levels;
   double RMSError = 0.0, MaxError = 0.0, BuildSeconds = 0.0;
   double WeightedRMSError = 0.0, WeightedMaxError = 0.0;

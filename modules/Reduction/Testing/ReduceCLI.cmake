@@ -19,6 +19,11 @@ art_reduce_cli_test(reduce_json EXIT 0 STDOUT "^\\{\"input\":.*\"tets\":8[0-9][0
   ARGS reduce --json --quiet "${_ct}" "${_out}/reduce_ct_json.vtu" --tets 0.1%)
 art_reduce_cli_test(reduce_levels EXIT 0 STDOUT "level .*reduce_lv_500.vtu.*level .*reduce_lv_2000.vtu.*output .*reduce_lv.vtu"
   ARGS reduce "${_ct}" "${_out}/reduce_lv.vtu" --tets 4000 --levels 500,2000)
+art_reduce_cli_test(reduce_edge_split EXIT 0
+  STDOUT "tets +[23],[0-9][0-9][0-9] \\([0-9,]+ vertices.*error +RMS [0-9.]+, max [0-9.]+ data units"
+  ARGS reduce "${_ct}" "${_out}/reduce_edge.vtu" --tets 3000 --refinement edge)
+art_reduce_cli_test(reduce_bad_refinement EXIT 2 STDERR "--refinement is bisection or edge, got 'red'" ONE_LINE_STDERR
+  ARGS reduce "${_ct}" "${_out}/x.vtu" --tets 100 --refinement red)
 art_reduce_cli_test(reduce_error_bound EXIT 0 STDOUT "error +RMS [0-9.]+.*\\(([0-2]\\.[0-9]+|3\\.000)% /"
   ARGS reduce "${_ct}" "${_out}/reduce_err.vtu" --max-error 3%)
 art_reduce_cli_test(reduce_tf EXIT 0

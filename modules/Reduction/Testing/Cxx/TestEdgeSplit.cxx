@@ -1,0 +1,274 @@
+// Free edge bisection (BisectionMesh::SplitEdge) and the reducer's error-driven edge choice
+// (ReducerOptions::Refinement::EdgeSplit): conformity, exact voxel ownership, nesting,
+// determinism, a ramp kept to round-off, and a lower error than newest-vertex bisection on a jump.
+#include "BisectionMesh.h"
+#include "DataLoader.h"
+#include "Error.h"
+#include "MeshQuality.h"
+#include "ParallelTiles.h"
+#include "ReducerVTK.h"
+#include "TetReducer.h"
+#include "VoxelRaster.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+
+namespace
+{
+double SignedVolume6(const art::BisectionMesh& m, int t)
+{
+  const auto v = m.Tet(t);
+  const auto &a = m.Vertex(v[0]), &b = m.Vertex(v[1]), &c = m.Vertex(v[2]), &d = m.Vertex(v[3]);
+  const double e[3][3] = { { double(b.x - a.x), double(b.y - a.y), double(b.z - a.z) },
+    { double(c.x - a.x), double(c.y - a.y), double(c.z - a.z) },
+    { double(d.x - a.x), double(d.y - a.y), double(d.z - a.z) } };
+  return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+    e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+}
+
+art::QualityReport Check(const art::BisectionMesh& m)
+{
+  std::vector<double> p;
+  for (int v = 0; v < m.NumberOfVertices(); ++v)
+  {
+    const auto& q = m.Vertex(v);
+    p.insert(p.end(), { double(q.x), double(q.y), double(q.z) });
+  }
+  std::vector<int> t;
+  for (int i = 0; i < m.NumberOfTets(); ++i)
+  {
+    auto v = m.Tet(i);
+    if (SignedVolume6(m, i) < 0)
+    {
+      std::swap(v[1], v[2]);
+    }
+    t.insert(t.end(), v.begin(), v.end());
+  }
+  return art::MeasureQuality(p.data(), m.NumberOfVertices(), t.data(), m.NumberOfTets());
+}
+
+vtkSmartPointer<vtkImageData> Field(const int d[3], const std::function<double(double, double, double)>& f)
+{
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->SetDimensions(d[0], d[1], d[2]);
+  img->SetSpacing(1.0, 0.8, 1.5);
+  img->SetOrigin(2.0, -1.0, 0.5);
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName("density");
+  a->SetNumberOfTuples(img->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < img->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    img->GetPoint(i, p);
+    a->SetTuple1(i, f(p[0], p[1], p[2]));
+  }
+  img->GetPointData()->SetScalars(a);
+  return img;
+}
+
+void ExpectValid(const art::ReducedMesh& m)
+{
+  const auto q = art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets());
+  EXPECT_TRUE(q.Valid()) << q.Summary();
+  EXPECT_EQ(q.InteriorFaces * 2 + q.BoundaryFaces, 4 * m.NumberOfTets());
+}
+
+art::ReducerOptions EdgeOptions()
+{
+  art::ReducerOptions opt;
+  opt.Refine = art::ReducerOptions::Refinement::EdgeSplit;
+  return opt;
+}
+
+// A sphere of value 1000 in 0, slightly off the grid: surfaces in every direction.
+double Ball(double x, double y, double z)
+{
+  const double dx = x - 23.3, dy = y - 14.1, dz = z - 24.7;
+  return dx * dx + dy * dy + dz * dz < 13.2 * 13.2 ? 1000.0 : 0.0;
+}
+} // namespace
+
+TEST(EdgeSplit, RandomEdgeSplitsStayConformingAndOwnEveryVoxelOnce)
+{
+  const int dims[3] = { 33, 27, 19 }, cubes[3] = { 2, 2, 1 };
+  art::BisectionMesh m;
+  m.InitKuhn(dims, cubes);
+  std::mt19937 rng(11);
+  std::vector<int> touched;
+  int splits = 0;
+  for (int i = 0; i < 1500; ++i)
+  {
+    const int t = std::uniform_int_distribution<int>(0, m.NumberOfTets() - 1)(rng);
+    const int e = std::uniform_int_distribution<int>(0, 5)(rng);
+    const int a = m.Tet(t)[art::BisectionMesh::EdgeCorners[e][0]], b = m.Tet(t)[art::BisectionMesh::EdgeCorners[e][1]];
+    if (m.EdgeLength2(a, b) < 1.0 || !m.CanSplitEdge(a, b))
+    {
+      continue;
+    }
+    std::vector<int> star;
+    m.TetsWithEdge(a, b, star);
+    std::vector<double> sign;
+    for (int s : star)
+    {
+      sign.push_back(SignedVolume6(m, s));
+    }
+    const int before = m.NumberOfTets();
+    touched.clear();
+    m.SplitEdge(a, b, touched);
+    ++splits;
+    ASSERT_EQ(m.NumberOfTets(), before + static_cast<int>(star.size()));
+    ASSERT_EQ(touched.size(), 2 * star.size());
+    // Each child has half its parent's volume, with the same sign.
+    for (size_t k = 0; k < star.size(); ++k)
+    {
+      EXPECT_EQ(SignedVolume6(m, touched[2 * k]), 0.5 * sign[k]);
+      EXPECT_EQ(SignedVolume6(m, touched[2 * k + 1]), 0.5 * sign[k]);
+    }
+    EXPECT_EQ(m.Parents(m.NumberOfVertices() - 1)[0], std::min(a, b));
+  }
+  EXPECT_GT(splits, 1000);
+  const auto q = Check(m);
+  EXPECT_TRUE(q.Valid()) << q.Summary();
+  EXPECT_NEAR(q.Volume, 32.0 * 26 * 18 * std::pow(double(art::BisectionMesh::Scale), 3), 1e-9 * q.Volume);
+  std::vector<int> owner(dims[0] * dims[1] * dims[2], 0);
+  for (int t = 0; t < m.NumberOfTets(); ++t)
+  {
+    art::LatticePoint P[4];
+    for (int a = 0; a < 4; ++a)
+    {
+      P[a] = m.Vertex(m.Tet(t)[a]);
+    }
+    art::TetRaster r;
+    ASSERT_TRUE(r.Setup(P));
+    r.ForEachVoxel(dims, [&](long long idx, const double*) { ++owner[idx]; });
+  }
+  for (size_t i = 0; i < owner.size(); ++i)
+  {
+    ASSERT_EQ(owner[i], 1) << "voxel " << i;
+  }
+  // Maubach's tags no longer hold once free splits were made.
+  EXPECT_THROW(m.Refine(0, touched), art::Error);
+}
+
+TEST(EdgeSplit, SplittingBelowTheLatticeIsRefused)
+{
+  const int dims[3] = { 2, 2, 2 }, cubes[3] = { 1, 1, 1 };
+  art::BisectionMesh m;
+  m.InitKuhn(dims, cubes);
+  std::vector<int> touched;
+  // Halve the x edge from corner 0 until its length is one lattice step.
+  int a = 0, b = 1;
+  for (int i = 0; i < art::BisectionMesh::ScaleBits; ++i)
+  {
+    ASSERT_TRUE(m.CanSplitEdge(a, b));
+    m.SplitEdge(a, b, touched);
+    b = m.NumberOfVertices() - 1;
+  }
+  EXPECT_FALSE(m.CanSplitEdge(a, b));
+  EXPECT_THROW(m.SplitEdge(a, b, touched), art::Error);
+  EXPECT_TRUE(Check(m).Valid());
+}
+
+TEST(EdgeSplit, LinearRampStaysExactAfterRefinement)
+{
+  const int d[3] = { 30, 26, 18 };
+  // A ramp plus a small bump so refinement happens; the ramp part must stay exact: on a pure
+  // ramp the refined fit is compared below.
+  auto ramp = [](double x, double y, double z) { return 3 * x - 2 * y + 0.25 * z - 5; };
+  auto opt = EdgeOptions();
+  opt.SolverTolerance = 1e-14;
+  opt.CoarseTets = 6;
+  opt.TargetTets = 300;
+  const auto vol = art::VolumeFromImage(Field(d, ramp));
+  const auto out = art::TetReducer(opt).Run(vol);
+  ASSERT_FALSE(out.empty());
+  const double range = vol.Range[1] - vol.Range[0];
+  EXPECT_LT(out.back().Rms, 1e-11 * range);
+  for (long long v = 0; v < out.back().NumberOfVertices(); ++v)
+  {
+    const double* p = &out.back().Points[3 * v];
+    EXPECT_NEAR(out.back().Values[v], ramp(p[0], p[1], p[2]), 1e-9 * range);
+  }
+  // With a bump the mesh refines by edge splits, and a ramp added to the field changes nothing but
+  // the values by the ramp: the error of f + ramp equals that of f.
+  auto bump = [](double x, double y, double z) { return 50 * std::exp(-0.02 * ((x - 14) * (x - 14) + (y - 8) * (y - 8) + (z - 12) * (z - 12))); };
+  auto sum = [&](double x, double y, double z) { return bump(x, y, z) + ramp(x, y, z); };
+  opt.TargetTets = 600;
+  opt.SolverTolerance = 1e-12;
+  const auto a = art::TetReducer(opt).Run(art::VolumeFromImage(Field(d, bump)));
+  const auto b = art::TetReducer(opt).Run(art::VolumeFromImage(Field(d, sum)));
+  ASSERT_GE(a.back().NumberOfTets(), 570);
+  EXPECT_NEAR(a.back().Rms, b.back().Rms, 1e-6 * a.back().Rms);
+  ExpectValid(b.back());
+}
+
+TEST(EdgeSplit, NestedLevelsMeetBudgetsAndTheErrorFalls)
+{
+  const int d[3] = { 48, 36, 40 };
+  auto opt = EdgeOptions();
+  opt.Levels = { 150, 600, 2400 };
+  opt.TargetTets = 6000;
+  const auto out = art::TetReducer(opt).Run(art::VolumeFromImage(Field(d, Ball)));
+  ASSERT_EQ(out.size(), 4u);
+  for (size_t i = 0; i < out.size(); ++i)
+  {
+    const long long want = out[i].TargetTets;
+    EXPECT_NEAR(double(out[i].NumberOfTets()), double(want), 0.05 * want) << "level " << i;
+    ExpectValid(out[i]);
+    if (i > 0)
+    {
+      EXPECT_LT(out[i].Rms, out[i - 1].Rms) << "level " << i;
+      // Nested: the coarser level's vertices come first, unchanged.
+      const auto& p = out[i - 1].Points;
+      ASSERT_GT(out[i].Points.size(), p.size());
+      EXPECT_TRUE(std::equal(p.begin(), p.end(), out[i].Points.begin())) << "level " << i;
+    }
+  }
+}
+
+TEST(EdgeSplit, LowerErrorThanBisectionOnASharpSurface)
+{
+  const int d[3] = { 48, 36, 40 };
+  const auto vol = art::VolumeFromImage(Field(d, Ball));
+  art::ReducerOptions bis;
+  bis.Levels = { 1000, 3000 };
+  bis.TargetTets = 8000;
+  auto edge = bis;
+  edge.Refine = art::ReducerOptions::Refinement::EdgeSplit;
+  const auto a = art::TetReducer(bis).Run(vol);
+  const auto b = art::TetReducer(edge).Run(vol);
+  ASSERT_EQ(a.size(), 3u);
+  ASSERT_EQ(b.size(), 3u);
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    EXPECT_LT(b[i].Rms, a[i].Rms) << "level " << i << ": " << b[i].NumberOfTets() << " vs " << a[i].NumberOfTets();
+    std::printf("[ info ] ball, %lld tets: RMS edge split %.2f, bisection %.2f (%lld tets)\n", b[i].NumberOfTets(),
+      b[i].Rms, a[i].Rms, a[i].NumberOfTets());
+  }
+}
+
+TEST(EdgeSplit, DeterministicForAnyThreadCount)
+{
+  auto vol = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/data/ct-head-128.mha");
+  auto opt = EdgeOptions();
+  opt.TargetTets = 2500;
+  const auto v = art::VolumeFromImage(vol);
+  const int before = art::GetThreadCount();
+  art::SetThreadCount(1);
+  const auto a = art::TetReducer(opt).Run(v);
+  art::SetThreadCount(2);
+  const auto b = art::TetReducer(opt).Run(v);
+  art::SetThreadCount(before);
+  ASSERT_EQ(a.back().Tets, b.back().Tets);
+  ASSERT_EQ(a.back().Points, b.back().Points);
+  EXPECT_EQ(a.back().Values, b.back().Values);
+  EXPECT_EQ(a.back().Rms, b.back().Rms);
+  ExpectValid(a.back());
+}
