@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cctype>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -31,6 +32,76 @@ std::string LowerExtension(const std::string& path)
   return (dot == std::string::npos || dot == 0) ? std::string() : name.substr(dot);
 }
 
+namespace
+{
+// Temporary files being written, so that Ctrl-C (or a kill) does not leave a hidden half-written
+// ".name.tmpPID-N.ext" beside the target. Fixed storage: the handler may only read memory and
+// call async-signal-safe functions (unlink, signal, raise).
+constexpr int MaxLive = 64;
+char LivePath[MaxLive][4096];
+std::atomic<int> LiveState[MaxLive]; // 0 free, 1 being changed, 2 a temporary file to remove
+
+void RemoveLiveAndReraise(int sig)
+{
+  for (int i = 0; i < MaxLive; ++i)
+  {
+    if (LiveState[i].load() == 2)
+    {
+      unlink(LivePath[i]);
+    }
+  }
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+// Only where the signal still has its default action: a host (Python, a GUI) keeps its own.
+void InstallHandlersOnce()
+{
+  static const bool installed = [] {
+    for (int sig : { SIGINT, SIGTERM, SIGHUP })
+    {
+      struct sigaction old = {};
+      if (sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_DFL)
+      {
+        struct sigaction sa = {};
+        sa.sa_handler = RemoveLiveAndReraise;
+        sigemptyset(&sa.sa_mask);
+        sigaction(sig, &sa, nullptr);
+      }
+    }
+    return true;
+  }();
+  (void)installed;
+}
+
+int RegisterLive(const std::string& path)
+{
+  if (path.size() >= sizeof LivePath[0])
+  {
+    return -1;
+  }
+  for (int i = 0; i < MaxLive; ++i)
+  {
+    int expected = 0;
+    if (LiveState[i].compare_exchange_strong(expected, 1))
+    {
+      std::memcpy(LivePath[i], path.c_str(), path.size() + 1);
+      LiveState[i].store(2);
+      return i;
+    }
+  }
+  return -1; // more than MaxLive files at once: the destructor still removes it
+}
+
+void UnregisterLive(int slot)
+{
+  if (slot >= 0)
+  {
+    LiveState[slot].store(0);
+  }
+}
+} // namespace
+
 AtomicFile::AtomicFile(std::string target)
   : Dest(std::move(target))
 {
@@ -54,6 +125,8 @@ AtomicFile::AtomicFile(std::string target)
   Temp = (dir / ("." + p.filename().string() + ".tmp" + std::to_string(getpid()) + "-" +
             std::to_string(serial++) + ext))
            .string();
+  InstallHandlersOnce();
+  Slot = RegisterLive(Temp);
 }
 
 AtomicFile::~AtomicFile()
@@ -62,6 +135,7 @@ AtomicFile::~AtomicFile()
   {
     std::remove(Temp.c_str());
   }
+  UnregisterLive(Slot);
 }
 
 void WriteFileAtomic(const std::string& path, const std::string& content)

@@ -1,5 +1,6 @@
 // AtomicFile: write to a temporary file beside the target, then rename over it, so a reader (or
-// a killed batch) never sees half a file and nothing the user had is lost on failure.
+// a killed batch) never sees half a file and nothing the user had is lost on failure; Ctrl-C or
+// a kill while it is open removes the temporary file too.
 #ifndef art_AtomicFile_h
 #define art_AtomicFile_h
 
@@ -28,6 +29,7 @@ public:
 
 private:
   std::string Dest, Temp;
+  int Slot = -1; ///< where the temporary file is registered for removal on SIGINT/SIGTERM/SIGHUP
   bool Done = false;
 };
 

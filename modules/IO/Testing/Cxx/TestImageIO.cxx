@@ -1,13 +1,17 @@
+#include "AtomicFile.h"
 #include "Error.h"
 #include "ImageIO.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using art::Image;
@@ -114,4 +118,47 @@ TEST(ImageIO, ErrorsNameTheFile)
   const std::string junk = TempDir() + "/junk.png";
   std::ofstream(junk) << "definitely not a png";
   EXPECT_THROW(art::ReadImage(junk), art::Error);
+}
+
+// Ctrl-C (or a kill) while a file is being written left its hidden temporary beside the target.
+// A child process opens one, writes half of it and is interrupted; the target stays as it was.
+TEST(ImageIO, InterruptedWriteLeavesNoTemp)
+{
+  const std::string dir = TempDir() + "/interrupted";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string target = dir + "/out.vtu";
+  std::ofstream(target) << "the user's file";
+  for (int sig : { SIGINT, SIGTERM })
+  {
+    struct sigaction now = {};
+    sigaction(sig, nullptr, &now);
+    if (now.sa_handler == SIG_IGN)
+    {
+      continue; // a background shell ignores SIGINT; the handler leaves that alone
+    }
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0)
+    {
+      art::AtomicFile f(target);
+      std::ofstream(f.TempPath()) << "half a mesh";
+      std::raise(sig);
+      _exit(0); // not reached
+    }
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig);
+    size_t files = 0;
+    for (const auto& e : fs::directory_iterator(dir))
+    {
+      ++files;
+      EXPECT_EQ(e.path().filename(), "out.vtu");
+    }
+    EXPECT_EQ(files, 1u);
+    std::ifstream in(target);
+    std::string kept;
+    std::getline(in, kept);
+    EXPECT_EQ(kept, "the user's file");
+  }
 }
