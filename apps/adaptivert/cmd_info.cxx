@@ -9,6 +9,7 @@
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
@@ -50,7 +51,8 @@ std::string Bounds(vtkDataSet* ds)
   double b[6];
   ds->GetBounds(b);
   char s[200];
-  std::snprintf(s, sizeof s, "x [%g, %g]  y [%g, %g]  z [%g, %g]", b[0], b[1], b[2], b[3], b[4], b[5]);
+  // Ten digits: data 1e7 away from the origin printed as "x [1e+07, 1e+07]" with six.
+  std::snprintf(s, sizeof s, "x [%.10g, %.10g]  y [%.10g, %.10g]  z [%.10g, %.10g]", b[0], b[1], b[2], b[3], b[4], b[5]);
   return s;
 }
 
@@ -95,7 +97,15 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
     Out(text, "  dimensions   %d x %d x %d (%s voxels)\n", d[0], d[1], d[2],
       Grouped(static_cast<long long>(d[0]) * d[1] * d[2]).c_str());
     Out(text, "  spacing      %g x %g x %g\n", sp[0], sp[1], sp[2]);
-    Out(text, "  origin       %g, %g, %g\n", o[0], o[1], o[2]);
+    Out(text, "  origin       %.10g, %.10g, %.10g\n", o[0], o[1], o[2]);
+    const double* dm = img->GetDirectionMatrix()->GetData();
+    if (!img->GetDirectionMatrix()->IsIdentity())
+    {
+      // The axes turned or mirrored: otherwise only the bounds would show it.
+      Out(text, "  direction    [%g %g %g; %g %g %g; %g %g %g]\n", dm[0], dm[1], dm[2], dm[3], dm[4], dm[5], dm[6],
+        dm[7], dm[8]);
+      j.Set("direction", std::vector<double>(dm, dm + 9));
+    }
     Out(text, "  bounds       %s\n", Bounds(img).c_str());
     Out(text, "  scalars      %s, %d component%s, range %g .. %g\n", s->GetDataTypeAsString(),
       s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "", r[0], r[1]);
