@@ -241,6 +241,42 @@ void ApplyRescale(vtkImageData* img, double slope, double intercept)
   }
   img->GetPointData()->SetScalars(out);
 }
+
+// vtkDICOMImageReader (VTK 9.1) stores the rows bottom-up and the slices from the last along the
+// slice normal n = row x column cosines, reports the first slice's ImagePositionPatient, takes
+// PixelSpacing's (row, column) pair as (x, y), and leaves origin 0 and no direction. Put each voxel
+// where the patient coordinates say (as ITK and a MetaImage of the same series do): columns
+// along r, rows along -c, slices along -n from the far corner; x spacing is the column spacing.
+void ApplyDicomGeometry(vtkImageData* img, vtkDICOMImageReader* r)
+{
+  const float* iop = r->GetImageOrientationPatient();
+  const float* ipp = r->GetImagePositionPatient();
+  if (!iop || !ipp)
+  {
+    return;
+  }
+  const double rc[3] = { iop[0], iop[1], iop[2] }, cc[3] = { iop[3], iop[4], iop[5] };
+  const double rr = rc[0] * rc[0] + rc[1] * rc[1] + rc[2] * rc[2];
+  const double ccc = cc[0] * cc[0] + cc[1] * cc[1] + cc[2] * cc[2];
+  const double rdc = rc[0] * cc[0] + rc[1] * cc[1] + rc[2] * cc[2];
+  if (std::abs(rr - 1) > 1e-3 || std::abs(ccc - 1) > 1e-3 || std::abs(rdc) > 1e-3)
+  {
+    return; // no (or no usable) orientation: keep VTK's layout
+  }
+  const double n[3] = { rc[1] * cc[2] - rc[2] * cc[1], rc[2] * cc[0] - rc[0] * cc[2], rc[0] * cc[1] - rc[1] * cc[0] };
+  const double* sp = img->GetSpacing();
+  const double sx = sp[1], sy = sp[0], sz = sp[2];
+  int d[3];
+  img->GetDimensions(d);
+  double origin[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    origin[a] = ipp[a] + (d[1] - 1) * sy * cc[a] + (d[2] - 1) * sz * n[a];
+  }
+  img->SetSpacing(sx, sy, sz);
+  img->SetOrigin(origin);
+  img->SetDirectionMatrix(rc[0], -cc[0], -n[0], rc[1], -cc[1], -n[1], rc[2], -cc[2], -n[2]);
+}
 } // namespace
 
 const char* KindName(DataKind k)
@@ -344,6 +380,10 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   if ((e == ".nrrd" || e == ".nhdr") && NrrdDirection(path, direction))
   {
     img->SetDirectionMatrix(direction);
+  }
+  if (auto* dicom = vtkDICOMImageReader::SafeDownCast(reader))
+  {
+    ApplyDicomGeometry(img, dicom);
   }
   if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(reader))
   {

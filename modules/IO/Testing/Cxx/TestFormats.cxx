@@ -269,6 +269,42 @@ TEST(Formats, DicomSeriesFolder)
   EXPECT_EQ(sum, 13104.0); // the crop's sum, printed by make_dicom.py
 }
 
+// vtkDICOMImageReader keeps rows bottom-up and slices far-to-near with origin 0 and no
+// direction, and swaps PixelSpacing's pair: a series with turned axes and non-square pixels came
+// out rotated and stretched against the same voxels from ITK or a MetaImage. Each voxel must land
+// at ImagePositionPatient + i * 0.7 * r + j * 0.9 * c + k * 1.5 * n (tests/cli/make_dicom_rotated.py).
+TEST(Formats, DicomPatientGeometry)
+{
+  auto img = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/tests/cli/dicom-rotated");
+  int d[3];
+  img->GetDimensions(d);
+  ASSERT_EQ(d[0], 4);
+  ASSERT_EQ(d[1], 3);
+  ASSERT_EQ(d[2], 3);
+  EXPECT_NEAR(img->GetSpacing()[0], 0.7, 1e-6);
+  EXPECT_NEAR(img->GetSpacing()[1], 0.9, 1e-6);
+  const double r[3] = { 0, 1, 0 }, c[3] = { -1, 0, 0 }, n[3] = { 0, 0, 1 }, p0[3] = { 10, 20, 30 };
+  vtkDataArray* s = img->GetPointData()->GetScalars();
+  for (int k = 0; k < d[2]; ++k)
+  {
+    for (int j = 0; j < d[1]; ++j)
+    {
+      for (int i = 0; i < d[0]; ++i)
+      {
+        const int v = static_cast<int>(s->GetTuple1(i + d[0] * (j + d[1] * k)));
+        const int vi = v % 10, vj = (v / 10) % 10, vk = v / 100; // the DICOM column, row, slice
+        double p[3];
+        img->TransformContinuousIndexToPhysicalPoint(i, j, k, p);
+        for (int a = 0; a < 3; ++a)
+        {
+          EXPECT_NEAR(p[a], p0[a] + vi * 0.7 * r[a] + vj * 0.9 * c[a] + vk * 1.5 * n[a], 1e-5)
+            << "voxel " << v << " axis " << a;
+        }
+      }
+    }
+  }
+}
+
 TEST(Formats, EverySurfaceFormatKeepsTheTriangles)
 {
   vtkNew<vtkSphereSource> sphere;
