@@ -70,7 +70,11 @@ int Run(const cli::Options& o, const std::string& input)
   auto store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd, shift));
   if (store->Size() == 0)
   {
-    throw art::Error("has no triangles to render", input);
+    // LoadSurface found polygons, so every one was dropped as degenerate: say so.
+    throw art::Error("has no triangles to render: all " +
+        std::to_string(pd->GetNumberOfPolys() + pd->GetNumberOfStrips()) +
+        " polygons have zero area or non-finite points (float coordinates far from the origin lose small detail)",
+      input);
   }
   art::AcceleratorOptions ao;
   try

@@ -47,7 +47,10 @@ SurfaceTraceView::SurfaceTraceView(vtkPolyData* pd, const std::string& file)
   Impl->Store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd, Impl->Origin));
   if (Impl->Store->Size() == 0)
   {
-    throw art::Error("has no triangles to show", file);
+    throw art::Error("has no triangles to show: all " +
+        std::to_string(pd->GetNumberOfPolys() + pd->GetNumberOfStrips()) +
+        " polygons have zero area or non-finite points (float coordinates far from the origin lose small detail)",
+      file);
   }
   Impl->Acc = art::MakeAccelerator(Impl->Store);
   if (vtkDataArray* sc = pd->GetPointData()->GetScalars())
