@@ -13,6 +13,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
 #include <vtkDICOMImageReader.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
@@ -21,6 +22,7 @@
 #include <vtkFloatArray.h>
 #include <vtkExecutive.h>
 #include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
 #include <vtkMetaImageReader.h>
 #include <vtkNIFTIImageReader.h>
 #include <vtkNew.h>
@@ -38,6 +40,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -215,6 +218,39 @@ void SelectScalars(vtkPointData* pd, const std::string& name, const std::string&
   }
 }
 
+// An image whose values are on its cells (voxel-centred data: labels, a finite-volume simulation)
+// and not on its points "held no voxels". Its cells become the voxels, placed at the cell centres.
+vtkSmartPointer<vtkImageData> CellsAsVoxels(vtkImageData* img, const std::string& name)
+{
+  vtkPointData* pd = img->GetPointData();
+  vtkCellData* cd = img->GetCellData();
+  const bool onPoints = name.empty() ? ChooseArray(pd, "", true) != nullptr : pd->GetArray(name.c_str()) != nullptr;
+  const bool onCells = name.empty() ? ChooseArray(cd, "", true) != nullptr : cd->GetArray(name.c_str()) != nullptr;
+  if (onPoints || !onCells)
+  {
+    return img;
+  }
+  int e[6];
+  img->GetExtent(e);
+  int n[3];
+  double centre[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    const int points = e[2 * a + 1] - e[2 * a] + 1;
+    n[a] = std::max(points - 1, 1); // a flat axis keeps its one layer of cells
+    centre[a] = e[2 * a] + (points > 1 ? 0.5 : 0.0);
+  }
+  double o[3];
+  img->TransformContinuousIndexToPhysicalPoint(centre, o);
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  out->SetDimensions(n);
+  out->SetSpacing(img->GetSpacing());
+  out->SetOrigin(o);
+  out->SetDirectionMatrix(img->GetDirectionMatrix());
+  out->GetPointData()->PassData(cd);
+  return out;
+}
+
 // NIfTI stores values as slope * stored + intercept (a CT in Hounsfield units is often uint16 with
 // intercept -1024); vtkNIFTIImageReader reports the pair but leaves the voxels as stored (unlike
 // vtkDICOMImageReader, which applies its own). A zero or non-finite slope means no scaling, as in
@@ -371,6 +407,7 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   RunReader(reader, path);
   auto img = vtkSmartPointer<vtkImageData>::New();
   img->ShallowCopy(reader->GetOutputDataObject(0));
+  img = CellsAsVoxels(img, array);
   SelectScalars(img->GetPointData(), array, path);
   double direction[9];
   if (vtkMetaImageReader::SafeDownCast(reader) && MetaImageDirection(path, direction))

@@ -3,6 +3,7 @@
 #include "DataLoader.h"
 #include "Error.h"
 
+#include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetWriter.h>
@@ -302,6 +303,48 @@ TEST(Formats, DicomPatientGeometry)
         }
       }
     }
+  }
+}
+
+// An image with its values on the cells only (labels, a finite-volume simulation) "held no
+// voxels": its cells are the voxels, at the cell centres, with the image's spacing and direction.
+TEST(Formats, CellDataImageBecomesVoxels)
+{
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->SetExtent(0, 4, 0, 3, 0, 2); // 4 x 3 x 2 cells
+  img->SetSpacing(0.5, 2, 3);
+  img->SetOrigin(1, 2, 3);
+  img->SetDirectionMatrix(-1, 0, 0, 0, 1, 0, 0, 0, 1);
+  vtkNew<vtkDoubleArray> labels;
+  labels->SetName("labels");
+  labels->SetNumberOfTuples(24);
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 4; ++i)
+        labels->SetValue(i + 4 * (j + 3 * k), i + 10 * j + 100 * k);
+  img->GetCellData()->SetScalars(labels);
+  const std::string p = Dir() + "/cells.vti";
+  vtkNew<vtkXMLImageDataWriter> w;
+  w->SetInputData(img);
+  w->SetFileName(p.c_str());
+  ASSERT_TRUE(w->Write());
+  for (const std::string& name : { std::string(), std::string("labels") })
+  {
+    auto v = art::LoadVolume(p, name);
+    int d[3];
+    v->GetDimensions(d);
+    EXPECT_EQ(d[0], 4);
+    EXPECT_EQ(d[1], 3);
+    EXPECT_EQ(d[2], 2);
+    ASSERT_NE(v->GetPointData()->GetScalars(), nullptr);
+    // Voxel (3, 2, 1) is the centre of cell (3, 2, 1): x = 1 - 3.5 * 0.5, y = 2 + 2.5 * 2, z = 3 + 1.5 * 3.
+    const int* e = v->GetExtent();
+    EXPECT_EQ(v->GetPointData()->GetScalars()->GetTuple1(3 + 4 * (2 + 3 * 1)), 123);
+    double x[3];
+    v->TransformContinuousIndexToPhysicalPoint(e[0] + 3, e[2] + 2, e[4] + 1, x);
+    EXPECT_NEAR(x[0], 1 - 1.75, 1e-12);
+    EXPECT_NEAR(x[1], 2 + 5.0, 1e-12);
+    EXPECT_NEAR(x[2], 3 + 4.5, 1e-12);
   }
 }
 
