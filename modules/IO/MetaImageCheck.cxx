@@ -1,6 +1,8 @@
 #include "MetaImageCheck.h"
 #include "Error.h"
 
+#include <cerrno>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -78,6 +80,24 @@ std::vector<double> Numbers(const Keys& keys, const std::string& key, size_t n)
   }
   return v;
 }
+
+// A whole number from the header; std::stoi's bare "stoi" reached the user as the whole message.
+long long Integer(const Keys& keys, const std::string& key, long long fallback, const std::string& path)
+{
+  const auto it = keys.find(key);
+  if (it == keys.end())
+  {
+    return fallback;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(it->second.c_str(), &end, 10);
+  if (it->second.empty() || *end != '\0' || errno == ERANGE)
+  {
+    throw Error(key + " is not a whole number: '" + it->second + "'", path);
+  }
+  return v;
+}
 } // namespace
 
 void CheckMetaImage(const std::string& path)
@@ -98,6 +118,11 @@ void CheckMetaImage(const std::string& path)
     {
       throw Error("DimSize has a non-positive size", path);
     }
+    // 2^32 per axis wrapped the product to 0 and passed the size check.
+    if (static_cast<unsigned long long>(d) > (1ULL << 48) / count)
+    {
+      throw Error("DimSize '" + keys["DimSize"] + "' is too large", path);
+    }
     count *= static_cast<unsigned long long>(d);
     ++ndims;
   }
@@ -110,7 +135,11 @@ void CheckMetaImage(const std::string& path)
   {
     throw Error("unknown ElementType '" + keys["ElementType"] + "'", path);
   }
-  const int channels = keys.count("ElementNumberOfChannels") ? std::stoi(keys["ElementNumberOfChannels"]) : 1;
+  const long long channels = Integer(keys, "ElementNumberOfChannels", 1, path);
+  if (channels < 1 || channels > 1024)
+  {
+    throw Error("ElementNumberOfChannels must be 1..1024, got " + std::to_string(channels), path);
+  }
   const bool compressed = keys.count("CompressedData") &&
     (keys["CompressedData"] == "True" || keys["CompressedData"] == "true");
 
@@ -124,7 +153,7 @@ void CheckMetaImage(const std::string& path)
       return; // a file series; VTK checks each file as it reads
     }
     dataFile = (fs::path(path).parent_path() / edf).string();
-    offset = keys.count("HeaderSize") ? std::stoll(keys["HeaderSize"]) : 0;
+    offset = Integer(keys, "HeaderSize", 0, path);
     std::error_code ec;
     if (!fs::exists(dataFile, ec))
     {
@@ -137,7 +166,7 @@ void CheckMetaImage(const std::string& path)
   long long need = static_cast<long long>(count) * esize * channels;
   if (compressed)
   {
-    need = keys.count("CompressedDataSize") ? std::stoll(keys["CompressedDataSize"]) : 1;
+    need = Integer(keys, "CompressedDataSize", 1, path);
   }
   if (have < need)
   {

@@ -123,3 +123,20 @@ TEST(DataLoader, TruncatedBinaryStl)
   ASSERT_TRUE(w->Write());
   EXPECT_EQ(art::LoadSurface(cut)->GetNumberOfPolys(), polys);
 }
+
+// MetaImage headers with numbers that do not fit: 2^32 per axis wrapped the voxel count to 0
+// (the size check passed), and a channel count 'abc' ended as the one word "stoi".
+TEST(DataLoader, MetaImageHeaderNumbers)
+{
+  auto write = [](const std::string& name, const std::string& lines) {
+    const std::string p = std::string(ART_TEST_OUTPUT) + "/" + name;
+    std::ofstream(p, std::ios::binary) << "ObjectType = Image\nNDims = 3\n" << lines
+                                       << "ElementType = MET_UCHAR\nElementDataFile = LOCAL\nABCDEFGH";
+    return p;
+  };
+  ExpectError(write("wrap.mha", "DimSize = 4294967296 4294967296 4294967296\n"), "DimSize '4294967296 4294967296 4294967296' is too large");
+  ExpectError(write("channels.mha", "DimSize = 2 2 2\nElementNumberOfChannels = abc\n"),
+    "ElementNumberOfChannels is not a whole number: 'abc'");
+  ExpectError(write("channels0.mha", "DimSize = 2 2 2\nElementNumberOfChannels = 0\n"), "ElementNumberOfChannels must be 1..1024");
+  EXPECT_EQ(art::LoadVolume(write("fine.mha", "DimSize = 2 2 2\n"))->GetNumberOfPoints(), 8);
+}
