@@ -1,10 +1,14 @@
 #include "PlyCheck.h"
 #include "Error.h"
 
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <vector>
 
 namespace art
 {
@@ -18,6 +22,228 @@ int TypeSize(const std::string& t)
     { "float32", 4 }, { "double", 8 }, { "float64", 8 } };
   const auto it = sizes.find(t);
   return it == sizes.end() ? 0 : it->second;
+}
+
+// A binary value's size and how to read it, looked up once per property.
+struct Type
+{
+  int size = 0;
+  bool isFloat = false, isSigned = false;
+};
+
+struct Property
+{
+  std::string name, type, countType; ///< countType is empty unless a list
+  Type item, count;
+};
+
+struct Element
+{
+  std::string name;
+  long long count = 0;
+  std::vector<Property> props;
+};
+
+bool IsFloat(const std::string& t)
+{
+  return t == "float" || t == "float32" || t == "double" || t == "float64";
+}
+
+// A value of binary type t at p as a double (list counts and vertex indices are whole numbers).
+Type TypeOf(const std::string& t)
+{
+  Type r;
+  r.size = TypeSize(t);
+  r.isFloat = IsFloat(t);
+  r.isSigned = t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32";
+  return r;
+}
+
+double Decode(const unsigned char* p, const Type& t, bool bigEndian)
+{
+  const int n = t.size;
+  unsigned char b[8];
+  std::memcpy(b, p, n);
+  if (bigEndian)
+  {
+    std::reverse(b, b + n);
+  }
+  if (t.isFloat)
+  {
+    if (n == 4)
+    {
+      float f;
+      std::memcpy(&f, b, 4);
+      return f;
+    }
+    double d;
+    std::memcpy(&d, b, 8);
+    return d;
+  }
+  unsigned long long u = 0;
+  for (int i = n - 1; i >= 0; --i)
+  {
+    u = (u << 8) | b[i];
+  }
+  if (t.isSigned && (b[n - 1] & 0x80))
+  {
+    return static_cast<double>(static_cast<long long>(u) - (1LL << (8 * n)));
+  }
+  return static_cast<double>(u);
+}
+
+// Buffered reads of n bytes from a binary body.
+class Bytes
+{
+public:
+  explicit Bytes(std::istream& in)
+    : In(in)
+  {
+  }
+  const unsigned char* Get(size_t n)
+  {
+    if (End - Pos < n)
+    {
+      std::memmove(Buf.data(), Buf.data() + Pos, End - Pos);
+      End -= Pos;
+      Pos = 0;
+      In.read(reinterpret_cast<char*>(Buf.data()) + End, static_cast<std::streamsize>(Buf.size() - End));
+      End += static_cast<size_t>(In.gcount());
+      if (End < n)
+      {
+        return nullptr;
+      }
+    }
+    const unsigned char* p = Buf.data() + Pos;
+    Pos += n;
+    return p;
+  }
+
+private:
+  std::istream& In;
+  std::vector<unsigned char> Buf = std::vector<unsigned char>(1 << 20);
+  size_t Pos = 0, End = 0;
+};
+
+// Reads every element of the body as vtkPLYReader will (ASCII: one instance per line) and checks
+// that nothing is missing and that faces name vertices that exist: VTK 9.1 crashes on a short
+// ASCII line and on a face index past the vertex count.
+void CheckBody(std::istream& in, const std::vector<Element>& elements, bool binary, bool bigEndian,
+  const std::string& path)
+{
+  long long vertices = -1;
+  for (const Element& e : elements)
+  {
+    if (e.name == "vertex")
+    {
+      vertices = e.count;
+    }
+  }
+  Bytes bytes(in);
+  std::string line;
+  for (const Element& e : elements)
+  {
+    const bool isFace = e.name == "face";
+    size_t row = 0; // bytes per instance when no property is a list
+    for (const Property& p : e.props)
+    {
+      row = (row == static_cast<size_t>(-1) || !p.countType.empty()) ? static_cast<size_t>(-1) : row + p.item.size;
+    }
+    if (binary && row != static_cast<size_t>(-1))
+    {
+      for (long long i = 0; i < e.count; ++i)
+      {
+        if (row && !bytes.Get(row))
+        {
+          throw Error("truncated: " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) +
+              " is missing",
+            path);
+        }
+      }
+      continue;
+    }
+    for (long long i = 0; i < e.count; ++i)
+    {
+      const char* cursor = nullptr;
+      if (!binary)
+      {
+        if (!std::getline(in, line))
+        {
+          throw Error("truncated: " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) +
+              " is missing",
+            path);
+        }
+        cursor = line.c_str();
+      }
+      // The next value; only counts and indices are parsed as numbers.
+      auto next = [&](const Type& type, bool parse, double& v) {
+        if (binary)
+        {
+          const unsigned char* p = bytes.Get(static_cast<size_t>(type.size));
+          if (p && parse)
+          {
+            v = Decode(p, type, bigEndian);
+          }
+          return p != nullptr;
+        }
+        while (*cursor == ' ' || *cursor == '\t' || *cursor == '\r')
+        {
+          ++cursor;
+        }
+        if (!*cursor)
+        {
+          return false;
+        }
+        const char* start = cursor;
+        while (*cursor && *cursor != ' ' && *cursor != '\t' && *cursor != '\r')
+        {
+          ++cursor;
+        }
+        if (parse)
+        {
+          char* end = nullptr;
+          v = std::strtod(start, &end);
+          return end == cursor;
+        }
+        return true;
+      };
+      for (const Property& p : e.props)
+      {
+        double v = 0;
+        if (p.countType.empty())
+        {
+          if (!next(p.item, false, v))
+          {
+            throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " lacks '" + p.name + "'", path);
+          }
+          continue;
+        }
+        if (!next(p.count, true, v) || !(v >= 0 && v <= 1e6))
+        {
+          throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " has no valid '" + p.name +
+              "' count",
+            path);
+        }
+        const long long n = static_cast<long long>(v);
+        const bool indices = isFace && (p.name == "vertex_indices" || p.name == "vertex_index");
+        for (long long k = 0; k < n; ++k)
+        {
+          if (!next(p.item, indices, v))
+          {
+            throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " lists " + std::to_string(n) +
+                " '" + p.name + "' but fewer are there",
+              path);
+          }
+          if (indices && vertices >= 0 && !(v >= 0 && v < static_cast<double>(vertices)))
+          {
+            throw Error("face " + std::to_string(i) + " refers to vertex " + std::to_string(static_cast<long long>(v)) +
+                " of " + std::to_string(vertices),
+              path);
+          }
+        }
+      }
+    }
+  }
 }
 } // namespace
 
@@ -33,7 +259,8 @@ void CheckPly(const std::string& path)
   {
     throw Error("not a PLY file (no 'ply' magic line)", path);
   }
-  bool binary = false, haveFormat = false, ended = false;
+  bool binary = false, bigEndian = false, haveFormat = false, ended = false;
+  std::vector<Element> layout;
   long long minBody = 0, elements = 0, curCount = 0;
   for (int n = 0; n < 10000 && std::getline(in, line); ++n)
   {
@@ -53,6 +280,7 @@ void CheckPly(const std::string& path)
         throw Error("unknown PLY format '" + f + "'", path);
       }
       binary = f != "ascii";
+      bigEndian = f == "binary_big_endian";
       haveFormat = true;
     }
     else if (word == "element")
@@ -64,6 +292,7 @@ void CheckPly(const std::string& path)
         throw Error("bad element line '" + line + "'", path);
       }
       ++elements;
+      layout.push_back({ name, curCount, {} });
     }
     else if (word == "property")
     {
@@ -78,6 +307,12 @@ void CheckPly(const std::string& path)
           throw Error("bad property line '" + line + "'", path);
         }
         minBody += curCount * TypeSize(countType); // each list holds at least its count
+        std::string pname;
+        ls >> pname;
+        if (!layout.empty())
+        {
+          layout.back().props.push_back({ pname, itemType, countType, TypeOf(itemType), TypeOf(countType) });
+        }
       }
       else
       {
@@ -86,6 +321,12 @@ void CheckPly(const std::string& path)
           throw Error("bad property line '" + line + "'", path);
         }
         minBody += curCount * TypeSize(t);
+        std::string pname;
+        ls >> pname;
+        if (!layout.empty())
+        {
+          layout.back().props.push_back({ pname, t, {}, TypeOf(t), {} });
+        }
       }
     }
     else if (word == "end_header")
@@ -111,5 +352,6 @@ void CheckPly(const std::string& path)
         " body bytes, file holds " + std::to_string(size - bodyStart),
       path);
   }
+  CheckBody(in, layout, binary, bigEndian, path);
 }
 } // namespace art

@@ -140,3 +140,31 @@ TEST(DataLoader, MetaImageHeaderNumbers)
   ExpectError(write("channels0.mha", "DimSize = 2 2 2\nElementNumberOfChannels = 0\n"), "ElementNumberOfChannels must be 1..1024");
   EXPECT_EQ(art::LoadVolume(write("fine.mha", "DimSize = 2 2 2\n"))->GetNumberOfPoints(), 8);
 }
+
+// vtkPLYReader (VTK 9.1) segfaulted on a face index past the vertex count and on an ASCII face
+// line shorter than its count; the body is read through once before VTK sees it.
+TEST(DataLoader, PlyFacesAreChecked)
+{
+  ExpectError(Bad + "face-index-out-of-range.ply", "face 0 refers to vertex 99999999 of 3");
+  ExpectError(Bad + "short-face-line.ply", "face 0 lists 200 'vertex_indices' but fewer are there");
+  // Binary, big-endian: the second face names vertex 3 of 3.
+  const std::string p = std::string(ART_TEST_OUTPUT) + "/face-index-binary.ply";
+  {
+    std::ofstream f(p, std::ios::binary);
+    f << "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+         "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+    const unsigned char vertices[36] = { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x3f, 0x80, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+      0, 0, 0, 0, 0x3f, 0x80, 0, 0, 0, 0, 0, 0 };
+    const unsigned char faces[26] = { 3, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 2, 3, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 3 };
+    f.write(reinterpret_cast<const char*>(vertices), sizeof vertices);
+    f.write(reinterpret_cast<const char*>(faces), sizeof faces);
+  }
+  ExpectError(p, "face 1 refers to vertex 3 of 3");
+  // The same file with a valid index loads.
+  {
+    std::fstream f(p, std::ios::in | std::ios::out | std::ios::binary);
+    f.seekp(-1, std::ios::end);
+    f.put(2);
+  }
+  EXPECT_EQ(art::LoadSurface(p)->GetNumberOfPolys(), 2);
+}
