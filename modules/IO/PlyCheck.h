@@ -1,6 +1,6 @@
-// PlyCheck: reads a PLY header and checks it is complete and that a binary body is at least as
-// long as its element counts require, before vtkPLYReader sees the file (which may read past
-// the end of a truncated or random file).
+// PlyCheck: reads a PLY header and checks it is complete, then reads the body through and checks
+// that every element is there and every face names an existing vertex, before vtkPLYReader sees
+// the file (which reads past the end of a truncated file and segfaults on a bad face index).
 #ifndef art_PlyCheck_h
 #define art_PlyCheck_h
 
