@@ -37,6 +37,12 @@ int Run(const cli::Options& o)
   {
     throw cli::UsageError("needs a benchmark name: " + (names.empty() ? std::string("none built") : names));
   }
+  // --runs 0 or -1 ran a full benchmark as if it were 1 (the median of one run, no spread).
+  const long long runs = o.GetInt("runs");
+  if (runs < 1 || runs > 1000)
+  {
+    throw cli::UsageError("--runs expects 1..1000 timed runs, got '" + o.Get("runs") + "'");
+  }
   for (const auto& t : cli::BenchTargets())
   {
     if (t.name == o.Positional()[0])
