@@ -1,6 +1,9 @@
 // adaptivert bench <what>: runs a registered benchmark (Bench.h).
 #include "Bench.h"
 #include "Command.h"
+#include "Error.h"
+
+#include <filesystem>
 
 namespace cli
 {
@@ -47,6 +50,15 @@ int Run(const cli::Options& o)
   {
     if (t.name == o.Positional()[0])
     {
+      // One line naming the folder (a file in the way said "filesystem error: cannot create
+      // directories: Not a directory [...]").
+      std::error_code ec;
+      const std::string dir = o.Get("results");
+      std::filesystem::create_directories(dir, ec);
+      if (!std::filesystem::is_directory(dir))
+      {
+        throw art::Error("cannot make the results folder" + (ec ? ": " + ec.message() : std::string()), dir);
+      }
       return t.run(o);
     }
   }
