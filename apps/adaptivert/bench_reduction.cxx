@@ -82,7 +82,7 @@ void Declare(cli::Options& o)
   o.Add("red-timed-tets", 0, "N", "reduction: also time a separate run to N tets (0: skip)", "200000");
   o.Add("red-no-quadric", 0, "", "reduction: skip VTK's quadric decimation (slow on big volumes)");
   o.Add("red-refinement", 0, "bisection|edge",
-    "reduction: newest-vertex bisection, or halving the edge that removes the most error", "bisection");
+    "reduction: newest-vertex bisection, or splitting the edges that remove the most error", "bisection");
 }
 
 struct Row

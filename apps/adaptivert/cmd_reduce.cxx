@@ -53,8 +53,8 @@ void Declare(cli::Options& o)
   o.Add("refine-fraction", 0, "F", "tet growth per refinement level", "0.2");
   o.Add("tolerance", 0, "T", "conjugate-gradient relative residual", "1e-8");
   o.Add("refinement", 0, "bisection|edge",
-    "bisection: newest-vertex, near-regular tets; edge: halve the edge that removes the most error "
-    "(thin tets along sharp surfaces)", "bisection");
+    "bisection: newest-vertex, near-regular tets; edge: split the edges that remove the most error "
+    "(thin tets along sharp surfaces, lower error per tet, slower)", "bisection");
   o.Add("tf", 0, "NAME|FILE",
     "reduce for this transfer function's opacity (a preset, e.g. ct-skin-bone, or a file of "
     "'scalar r g b opacity' lines): tets go where opacity changes");

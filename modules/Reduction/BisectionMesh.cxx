@@ -11,6 +11,7 @@ void BisectionMesh::InitKuhn(const int dims[3], const int cubes[3])
 {
   Verts.clear();
   Parent.clear();
+  Quarter.clear();
   Tets.clear();
   Tag.clear();
   Gen.clear();
@@ -35,6 +36,7 @@ void BisectionMesh::InitKuhn(const int dims[3], const int cubes[3])
       {
         Verts.push_back({ ticks[0][i], ticks[1][j], ticks[2][k] });
         Parent.push_back({ -1, -1 });
+        Quarter.push_back(2);
       }
   VertexTets.resize(Verts.size());
   // The six permutations of the axes give the six Kuhn tets along the diagonal (0,0,0)-(1,1,1);
@@ -99,15 +101,19 @@ double BisectionMesh::EdgeLength2(int a, int b) const
   return dx * dx + dy * dy + dz * dz;
 }
 
-bool BisectionMesh::CanSplitEdge(int a, int b) const
+bool BisectionMesh::CanSplitEdge(int a, int b, int quarters) const
 {
   const LatticePoint &p = Verts[a], &q = Verts[b];
-  return ((p.x + q.x) % 2 == 0) && ((p.y + q.y) % 2 == 0) && ((p.z + q.z) % 2 == 0);
+  if (quarters == 2)
+  {
+    return ((p.x + q.x) % 2 == 0) && ((p.y + q.y) % 2 == 0) && ((p.z + q.z) % 2 == 0);
+  }
+  return (quarters == 1 || quarters == 3) && (q.x - p.x) % 4 == 0 && (q.y - p.y) % 4 == 0 && (q.z - p.z) % 4 == 0;
 }
 
-void BisectionMesh::SplitEdge(int a, int b, std::vector<int>& touched)
+void BisectionMesh::SplitEdge(int a, int b, std::vector<int>& touched, int quarters)
 {
-  if (a == b || !CanSplitEdge(a, b))
+  if (a == b || !CanSplitEdge(a, b, quarters))
   {
     throw Error("refinement reached the lattice resolution");
   }
@@ -120,8 +126,11 @@ void BisectionMesh::SplitEdge(int a, int b, std::vector<int>& touched)
   EdgeSplits = true;
   const LatticePoint &p = Verts[a], &q = Verts[b];
   const int mid = static_cast<int>(Verts.size());
-  Verts.push_back({ (p.x + q.x) / 2, (p.y + q.y) / 2, (p.z + q.z) / 2 });
+  // Exact: CanSplitEdge made (q - p) * quarters a multiple of 4.
+  Verts.push_back({ p.x + (q.x - p.x) * quarters / 4, p.y + (q.y - p.y) * quarters / 4,
+    p.z + (q.z - p.z) * quarters / 4 });
   Parent.push_back({ std::min(a, b), std::max(a, b) });
+  Quarter.push_back(static_cast<uint8_t>(a < b ? quarters : 4 - quarters));
   VertexTets.emplace_back();
   for (int t : star)
   {
@@ -230,6 +239,7 @@ void BisectionMesh::RefineRecursive(int t, std::vector<int>& touched, int depth)
   const int mid = static_cast<int>(Verts.size());
   Verts.push_back({ (p.x + q.x) / 2, (p.y + q.y) / 2, (p.z + q.z) / 2 });
   Parent.push_back({ e[0], e[1] });
+  Quarter.push_back(2);
   VertexTets.emplace_back();
   for (int s : patch)
   {

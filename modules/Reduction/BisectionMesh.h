@@ -1,7 +1,8 @@
 // BisectionMesh: a conforming tetrahedral mesh of a box refined by newest-vertex bisection.
 // Kuhn/Freudenthal split of a coarse grid of boxes (6 tets each), then Maubach's tagged bisection
 // (Maubach 1995; Arnold, Mukherjee & Pouly 2000) with recursive conforming closure, or, instead,
-// free edge bisection: any chosen edge halved together with its whole star (always conforming).
+// free edge splits: any chosen edge cut at its midpoint or a quarter point together with its
+// whole star (always conforming).
 #ifndef art_BisectionMesh_h
 #define art_BisectionMesh_h
 
@@ -14,7 +15,7 @@
 namespace art
 {
 /// A mesh vertex on an exact lattice: voxel index coordinates times 2^ScaleBits. Coarse corners
-/// sit on voxel centres and every bisection midpoint stays exact, so the voxel-in-tet test can be
+/// sit on voxel centres and every bisection midpoint (or checked quarter point) stays exact, so the voxel-in-tet test can be
 /// done in integer arithmetic and each voxel centre belongs to exactly one tet.
 struct LatticePoint
 {
@@ -39,6 +40,8 @@ public:
   const LatticePoint& Vertex(int v) const { return Verts[v]; }
   /// For a vertex made by bisection, the two ends of the edge it halves (-1 for coarse corners).
   const std::array<int, 2>& Parents(int v) const { return Parent[v]; }
+  /// Where v sits on its parents' edge: the weight of Parents(v)[1], in quarters (2: the midpoint).
+  int ParentQuarters(int v) const { return Quarter[v]; }
   /// Bumped each time slot t is replaced (a stale reference to t can tell).
   uint32_t Version(int t) const { return Versions[t]; }
   /// Number of bisections from the coarse tet.
@@ -58,13 +61,14 @@ public:
   static const int EdgeCorners[6][2];
   /// Squared length of the edge (a, b) in voxel index units.
   double EdgeLength2(int a, int b) const;
-  /// True when the midpoint of (a, b) lies on the lattice.
-  bool CanSplitEdge(int a, int b) const;
-  /// Halves the edge (a, b) (vertex ids) and every tet around it at its midpoint: conforming
+  /// True when the point `quarters` / 4 of the way from a to b (1, 2 or 3) lies on the lattice.
+  bool CanSplitEdge(int a, int b, int quarters = 2) const;
+  /// Splits the edge (a, b) (vertex ids) and every tet around it at one point: conforming
   /// whatever edge is chosen, and each child keeps its parent's orientation. Replaced and new tet
   /// slots are appended to `touched`. Once used, Refine (Maubach's tags) is refused: the tags no
   /// longer describe a compatible bisection. Throws when the midpoint is off the lattice.
-  void SplitEdge(int a, int b, std::vector<int>& touched);
+  /// `quarters` (1..3) puts the new vertex that far from a toward b instead of at the midpoint.
+  void SplitEdge(int a, int b, std::vector<int>& touched, int quarters = 2);
   /// Tets that have both a and b as corners, ascending.
   void TetsWithEdge(int a, int b, std::vector<int>& out) const;
 
@@ -75,6 +79,7 @@ private:
 
   std::vector<LatticePoint> Verts;
   std::vector<std::array<int, 2>> Parent;
+  std::vector<uint8_t> Quarter;
   std::vector<std::array<int, 4>> Tets; // Maubach order x0..x3
   std::vector<uint8_t> Tag;             // k in 1..3: refinement edge is (x0, xk)
   std::vector<uint16_t> Gen;

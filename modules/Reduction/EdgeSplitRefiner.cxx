@@ -21,11 +21,13 @@ bool EdgeSplitRefiner::CanRefine(const BisectionMesh& mesh, int t, double minEdg
 }
 
 double EdgeSplitRefiner::Gain(const BisectionMesh& mesh, int a, int b, const std::vector<uint32_t>& version,
-  const std::vector<EdgeSplitMoments>& moments, const std::vector<double>& x, std::vector<int>& star, bool* fresh)
+  const std::vector<EdgeSplitMoments>& moments, const std::vector<double>& x, double minEdge2, std::vector<int>& star,
+  bool* fresh, int* quarters)
 {
   mesh.TetsWithEdge(a, b, star);
   const int nt = static_cast<int>(version.size());
-  double S = 0, Q = 0;
+  constexpr int NP = EdgeSplitMoments::Positions;
+  double S[NP] = {}, Q[NP] = {};
   bool all = true;
   for (int s : star)
   {
@@ -44,11 +46,16 @@ double EdgeSplitRefiner::Gain(const BisectionMesh& mesh, int a, int b, const std
     for (int k = 0; k < 6; ++k)
     {
       const int* e = BisectionMesh::EdgeCorners[k];
-      if ((e[0] == ia && e[1] == ib) || (e[0] == ib && e[1] == ia))
+      const bool same = e[0] == ia && e[1] == ib;
+      if (same || (e[0] == ib && e[1] == ia))
       {
         const double c[4] = { x[w[0]], x[w[1]], x[w[2]], x[w[3]] };
-        S += moments[s].S(k, c);
-        Q += moments[s].Q[k];
+        for (int q = 0; q < NP; ++q)
+        {
+          const int qs = same ? q : NP - 1 - q; // this tet lists the edge from b: t -> 1 - t
+          S[q] += moments[s].S(qs, k, c);
+          Q[q] += moments[s].Q[qs][k];
+        }
       }
     }
   }
@@ -56,9 +63,32 @@ double EdgeSplitRefiner::Gain(const BisectionMesh& mesh, int a, int b, const std
   {
     *fresh = all;
   }
+  // The midpoint unless a quarter point (where the lattice has one) removes more: a vertex can
+  // then sit nearer a surface. Measured on the full CT: RMS 2-3% lower at the paper's levels than
+  // midpoints only, 99.7 vs 108.0 at 200k tets, for 1.5 x the time and the memory.
+  double best = Q[1] > 0 ? S[1] * S[1] / Q[1] : 0.0;
+  int bestQ = 2;
+  const bool quarterPoints = mesh.EdgeLength2(a, b) >= 4.0 * minEdge2;
+  for (int q : { 0, 2 })
+  {
+    if (!quarterPoints || !mesh.CanSplitEdge(a, b, q + 1))
+    {
+      continue;
+    }
+    const double g = Q[q] > 0 ? S[q] * S[q] / Q[q] : 0.0;
+    if (g > best)
+    {
+      best = g;
+      bestQ = q + 1;
+    }
+  }
+  if (quarters)
+  {
+    *quarters = bestQ;
+  }
   // Per added tet, because budgets count tets: a high-valence edge costs more. Measured: on a
   // smooth quadratic 0.61 x bisection's error at 1500 tets, 1.27 x without the division.
-  return Q > 0 ? S * S / Q / static_cast<double>(star.size()) : 0.0;
+  return best / static_cast<double>(star.size());
 }
 
 void EdgeSplitRefiner::RefineLevel(BisectionMesh& mesh, const std::vector<int>& candidates,
@@ -85,15 +115,16 @@ void EdgeSplitRefiner::RefineLevel(BisectionMesh& mesh, const std::vector<int>& 
   struct Ranked
   {
     double gain;
-    int a, b;
+    int a, b, quarters;
   };
   std::vector<Ranked> ranked(edges.size());
   ForEachRange(static_cast<long long>(edges.size()), 256, [&](long long i0, long long i1, Counters&) {
     std::vector<int> star;
     for (long long i = i0; i < i1; ++i)
     {
-      ranked[i] = { Gain(mesh, edges[i].first, edges[i].second, version, moments, x, star), edges[i].first,
-        edges[i].second };
+      int q = 2;
+      const double g = Gain(mesh, edges[i].first, edges[i].second, version, moments, x, minEdge2, star, nullptr, &q);
+      ranked[i] = { g, edges[i].first, edges[i].second, q };
     }
   });
   std::sort(ranked.begin(), ranked.end(), [](const Ranked& p, const Ranked& q) {
@@ -103,12 +134,12 @@ void EdgeSplitRefiner::RefineLevel(BisectionMesh& mesh, const std::vector<int>& 
   for (const Ranked& e : ranked)
   {
     bool fresh = false;
-    Gain(mesh, e.a, e.b, version, moments, x, star, &fresh);
+    Gain(mesh, e.a, e.b, version, moments, x, minEdge2, star, &fresh);
     if (!fresh)
     {
       continue;
     }
-    mesh.SplitEdge(e.a, e.b, touched);
+    mesh.SplitEdge(e.a, e.b, touched, e.quarters);
     if (mesh.NumberOfTets() >= target)
     {
       break;

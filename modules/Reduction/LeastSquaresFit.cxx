@@ -65,7 +65,8 @@ void LeastSquaresFit::Extend(const BisectionMesh& mesh, std::vector<double>& x)
   for (int v = static_cast<int>(x.size()); v < mesh.NumberOfVertices(); ++v)
   {
     const auto& p = mesh.Parents(v);
-    x.push_back(p[0] >= 0 ? 0.5 * (x[p[0]] + x[p[1]]) : 0.0);
+    const double w = 0.25 * mesh.ParentQuarters(v);
+    x.push_back(p[0] >= 0 ? (1.0 - w) * x[p[0]] + w * x[p[1]] : 0.0);
   }
 }
 
@@ -323,13 +324,20 @@ void LeastSquaresFit::EdgeMoments(const BisectionMesh& mesh, const std::vector<i
           const double wd = w * (f - m.F0);
           for (int k = 0; k < 6; ++k)
           {
-            const double phi = 2.0 * std::min(l[BisectionMesh::EdgeCorners[k][0]], l[BisectionMesh::EdgeCorners[k][1]]);
-            const double wphi = w * phi;
-            m.P[k] += wd * phi;
-            m.Q[k] += wphi * phi;
-            for (int q = 0; q < 4; ++q)
+            const double la = l[BisectionMesh::EdgeCorners[k][0]], lb = l[BisectionMesh::EdgeCorners[k][1]];
+            for (int q = 0; q < EdgeSplitMoments::Positions; ++q)
             {
-              m.R[k][q] += wphi * l[q];
+              // The new vertex at t = (q + 1) / 4 from the first corner: its hat is
+              // min(lb / t, la / (1 - t)) over the star (2 min(la, lb) at the midpoint).
+              const double t = 0.25 * (q + 1);
+              const double phi = std::min(lb / t, la / (1.0 - t));
+              const double wphi = w * phi;
+              m.P[q][k] += wd * phi;
+              m.Q[q][k] += wphi * phi;
+              for (int c = 0; c < 4; ++c)
+              {
+                m.R[q][k][c] += wphi * l[c];
+              }
             }
           }
         });

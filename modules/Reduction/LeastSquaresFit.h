@@ -34,21 +34,24 @@ struct VoxelErrorReport
   double WeightedRms = 0, WeightedMax = 0; ///< sqrt(mean Error2), sqrt(max Error2)
 };
 
-/// For edge choice, per edge e of a tet (BisectionMesh::EdgeCorners), over the voxels it owns:
-/// with phi_e = 2 min(lambda_a, lambda_b), the hat of e's midpoint once e is halved,
-/// P = sum w (f - F0) phi_e, R_c = sum w lambda_c phi_e and Q = sum w phi_e^2. They do not depend
-/// on the fit (gathered once per tet, as TetMoments): at corner values x the correlation of the
-/// residual with the hat is S = P - sum_c (x_c - F0) R_c, and, summed over e's star, S^2 / Q is the
-/// squared error the split removes when the new vertex alone takes its best value.
+/// For edge choice, per edge e = (a, b) of a tet (BisectionMesh::EdgeCorners) and per position
+/// t = 1/4, 1/2, 3/4 from a, over the voxels the tet owns: with phi = min(lambda_b / t,
+/// lambda_a / (1 - t)), the hat of the new vertex once e is split there, P = sum w (f - F0) phi,
+/// R_c = sum w lambda_c phi and Q = sum w phi^2. They do not depend on the fit (gathered once per
+/// tet, as TetMoments): at corner values x the correlation of the residual with the hat is
+/// S = P - sum_c (x_c - F0) R_c, and, summed over e's star, S^2 / Q is the squared error the split
+/// removes when the new vertex alone takes its best value.
 struct EdgeSplitMoments
 {
+  static constexpr int Positions = 3; ///< the new vertex at 1/4, 1/2 or 3/4 of the edge
   double F0 = 0;
-  double P[6] = {}, Q[6] = {};
-  double R[6][4] = {};
-  /// S of edge e at the corner values c (the fit at this tet's four corners).
-  double S(int e, const double c[4]) const
+  double P[Positions][6] = {}, Q[Positions][6] = {};
+  double R[Positions][6][4] = {};
+  /// S of edge e with the vertex at (q + 1) / 4 from its first corner, at the corner values c.
+  double S(int q, int e, const double c[4]) const
   {
-    return P[e] - (c[0] - F0) * R[e][0] - (c[1] - F0) * R[e][1] - (c[2] - F0) * R[e][2] - (c[3] - F0) * R[e][3];
+    return P[q][e] - (c[0] - F0) * R[q][e][0] - (c[1] - F0) * R[q][e][1] - (c[2] - F0) * R[q][e][2] -
+      (c[3] - F0) * R[q][e][3];
   }
 };
 
@@ -66,9 +69,10 @@ public:
   /// Re-gathers the moments of the listed tets (new or replaced); sizes to the mesh. With an
   /// importance, `fit` (vertex values, Extend-ed to the mesh) is the point the weights are taken at.
   void UpdateMoments(const BisectionMesh& mesh, const std::vector<int>& tets, const std::vector<double>* fit = nullptr);
-  /// New vertices take their parents' mean: the previous fit, exactly, on the refined mesh.
+  /// New vertices take their parents' values interpolated at their place on the edge: the
+  /// previous fit, exactly, on the refined mesh.
   static void Extend(const BisectionMesh& mesh, std::vector<double>& x);
-  /// Solves for vertex values `x` (warm start: its current content, resized with parents' mean).
+  /// Solves for vertex values `x` (warm start: its current content, Extend-ed).
   /// Returns CG iterations; stops at ||r|| <= tolerance ||b||.
   int Solve(const BisectionMesh& mesh, std::vector<double>& x, double tolerance, int maxIterations = 2000);
   /// Per-tet (weighted) sum of squared errors from the cached moments (no voxel pass).

@@ -15,10 +15,11 @@
 // isotropic bisection. TetGen/CGAL sizing-field refinement was not built: no exact nesting.
 // RefineFraction 0.05-0.5, MinEdgeVoxels 1-3, Regularization 0.05-3, the coarse mesh size and a
 // bisection-gain priority move these ratios by at most a few percent (reduction_results/README.md).
-// Option Refinement::EdgeSplit halves, best first, the edges whose split (star and all) removes
-// the most squared error per added tet: still nested, conforming and exact on the lattice, and
-// anisotropic. Full CT: RMS 0.92-0.99 x bisection's at the six levels, 0.85 x at 200k tets, but
-// min dihedral near 0 deg and 1.3 x the time, so it is not the default (figures in that README).
+// Option Refinement::EdgeSplit splits, best first, the edges whose split (star and all, at the
+// midpoint or a quarter point) removes the most squared error per added tet: still nested,
+// conforming and exact on the lattice, and anisotropic. Full CT: RMS 0.90-0.96 x bisection's at
+// the six levels, 0.79 x at 200k tets, but min dihedral near 0 deg and about 3 x the time, so it
+// is not the default (figures in that README).
 #ifndef art_TetReducer_h
 #define art_TetReducer_h
 
@@ -42,10 +43,10 @@ struct ReducerOptions
     Max
   };
   /// How a selected tet is refined. Bisection: newest-vertex bisection (Maubach), a fixed edge
-  /// per tet, isotropic shapes. EdgeSplit: the edges of the refinable tets that remove the most
-  /// squared error per added tet when halved with their whole star (the midpoint alone refitted,
-  /// from voxel moments) are halved, best first: tets grow thin across sharp surfaces; lower
-  /// error per tet, far flatter tets, a voxel pass more per level.
+  /// per tet, isotropic shapes. EdgeSplit (EdgeSplitRefiner): the edges of the refinable tets that
+  /// remove the most squared error per added tet when split with their whole star (the new vertex
+  /// alone refitted, from voxel moments) are split, best first: tets grow thin across sharp
+  /// surfaces; lower error per tet, far flatter tets, about 3 x the time.
   enum class Refinement
   {
     Bisection,

@@ -1,10 +1,11 @@
 // Free edge bisection (BisectionMesh::SplitEdge) and the reducer's error-driven edge choice
-// (ReducerOptions::Refinement::EdgeSplit): conformity, exact voxel ownership, nesting,
+// (ReducerOptions::Refinement::EdgeSplit), midpoints and quarter points: conformity, exact voxel ownership, nesting,
 // determinism, a ramp kept to round-off, and a lower error than newest-vertex bisection on a jump.
 #include "BisectionMesh.h"
 #include "DataLoader.h"
 #include "Error.h"
 #include "MeshQuality.h"
+#include "LeastSquaresFit.h"
 #include "ParallelTiles.h"
 #include "ReducerVTK.h"
 #include "TetReducer.h"
@@ -102,16 +103,18 @@ TEST(EdgeSplit, RandomEdgeSplitsStayConformingAndOwnEveryVoxelOnce)
   m.InitKuhn(dims, cubes);
   std::mt19937 rng(11);
   std::vector<int> touched;
-  int splits = 0;
+  int splits = 0, quarterSplits = 0;
   for (int i = 0; i < 1500; ++i)
   {
     const int t = std::uniform_int_distribution<int>(0, m.NumberOfTets() - 1)(rng);
     const int e = std::uniform_int_distribution<int>(0, 5)(rng);
     const int a = m.Tet(t)[art::BisectionMesh::EdgeCorners[e][0]], b = m.Tet(t)[art::BisectionMesh::EdgeCorners[e][1]];
-    if (m.EdgeLength2(a, b) < 1.0 || !m.CanSplitEdge(a, b))
+    const int quarters = std::uniform_int_distribution<int>(1, 3)(rng);
+    if (m.EdgeLength2(a, b) < 1.0 || !m.CanSplitEdge(a, b, quarters))
     {
       continue;
     }
+    quarterSplits += quarters != 2 ? 1 : 0;
     std::vector<int> star;
     m.TetsWithEdge(a, b, star);
     std::vector<double> sign;
@@ -121,19 +124,33 @@ TEST(EdgeSplit, RandomEdgeSplitsStayConformingAndOwnEveryVoxelOnce)
     }
     const int before = m.NumberOfTets();
     touched.clear();
-    m.SplitEdge(a, b, touched);
+    m.SplitEdge(a, b, touched, quarters);
     ++splits;
     ASSERT_EQ(m.NumberOfTets(), before + static_cast<int>(star.size()));
     ASSERT_EQ(touched.size(), 2 * star.size());
-    // Each child has half its parent's volume, with the same sign.
+    // The child keeping a has t = quarters / 4 of its parent's volume, the other 1 - t; same sign.
     for (size_t k = 0; k < star.size(); ++k)
     {
-      EXPECT_EQ(SignedVolume6(m, touched[2 * k]), 0.5 * sign[k]);
-      EXPECT_EQ(SignedVolume6(m, touched[2 * k + 1]), 0.5 * sign[k]);
+      EXPECT_EQ(SignedVolume6(m, touched[2 * k]), 0.25 * quarters * sign[k]);
+      EXPECT_EQ(SignedVolume6(m, touched[2 * k + 1]), 0.25 * (4 - quarters) * sign[k]);
     }
     EXPECT_EQ(m.Parents(m.NumberOfVertices() - 1)[0], std::min(a, b));
   }
   EXPECT_GT(splits, 1000);
+  EXPECT_GT(quarterSplits, 300);
+  // Extend puts a new vertex on its edge's interpolant: a linear field stays exact.
+  auto ramp = [](const art::LatticePoint& p) { return 0.5 * p.x - 2.0 * p.y + 0.125 * p.z + 3.0; };
+  std::vector<double> x;
+  for (int v = 0; v < m.NumberOfVertices() && m.Parents(v)[0] < 0; ++v)
+  {
+    x.push_back(ramp(m.Vertex(v)));
+  }
+  art::LeastSquaresFit::Extend(m, x);
+  ASSERT_EQ(x.size(), size_t(m.NumberOfVertices()));
+  for (int v = 0; v < m.NumberOfVertices(); ++v)
+  {
+    ASSERT_NEAR(x[v], ramp(m.Vertex(v)), 1e-6) << "vertex " << v;
+  }
   const auto q = Check(m);
   EXPECT_TRUE(q.Valid()) << q.Summary();
   EXPECT_NEAR(q.Volume, 32.0 * 26 * 18 * std::pow(double(art::BisectionMesh::Scale), 3), 1e-9 * q.Volume);
