@@ -3,6 +3,7 @@
 #include "AtomicFile.h"
 #include "Error.h"
 #include "MetaImageCheck.h"
+#include "NrrdCheck.h"
 #include "NrrdDirection.h"
 #include "ObjCheck.h"
 #include "PlyCheck.h"
@@ -402,6 +403,7 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   }
   else
   {
+    CheckNrrd(path);
     reader = FileReader<vtkNrrdReader>(path);
   }
   RunReader(reader, path);

@@ -168,3 +168,18 @@ TEST(DataLoader, PlyFacesAreChecked)
   }
   EXPECT_EQ(art::LoadSurface(p)->GetNumberOfPolys(), 2);
 }
+
+// vtkNrrdReader reported raw data shorter than the header's sizes as "File operation failed:
+// 18446744073709305856, ext: ..."; the size is checked first, for attached and detached data.
+TEST(DataLoader, TruncatedNrrd)
+{
+  const std::string dir = std::string(ART_TEST_OUTPUT) + "/";
+  const std::string header = "NRRD0004\ntype: short\ndimension: 3\nsizes: 11 5 3\nencoding: raw\nendian: little\n";
+  std::ofstream(dir + "short.nrrd", std::ios::binary) << header << "\n" << std::string(100, 'x');
+  ExpectError(dir + "short.nrrd", "truncated: header promises 330 data bytes, file holds 100");
+  std::ofstream(dir + "short.raw", std::ios::binary) << std::string(329, 'x');
+  std::ofstream(dir + "short.nhdr", std::ios::binary) << header << "data file: short.raw\n";
+  ExpectError(dir + "short.nhdr", "truncated: header promises 330 data bytes, file holds 329");
+  std::ofstream(dir + "short.raw", std::ios::binary) << std::string(330, 'x');
+  EXPECT_EQ(art::LoadVolume(dir + "short.nhdr")->GetNumberOfPoints(), 165);
+}

@@ -1,0 +1,119 @@
+#include "NrrdCheck.h"
+#include "Error.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace art
+{
+namespace
+{
+int NrrdTypeSize(const std::string& t)
+{
+  static const std::map<std::string, int> sizes = { { "signed char", 1 }, { "int8", 1 }, { "int8_t", 1 },
+    { "uchar", 1 }, { "unsigned char", 1 }, { "uint8", 1 }, { "uint8_t", 1 }, { "short", 2 },
+    { "short int", 2 }, { "signed short", 2 }, { "signed short int", 2 }, { "int16", 2 }, { "int16_t", 2 },
+    { "ushort", 2 }, { "unsigned short", 2 }, { "unsigned short int", 2 }, { "uint16", 2 }, { "uint16_t", 2 },
+    { "int", 4 }, { "signed int", 4 }, { "int32", 4 }, { "int32_t", 4 }, { "uint", 4 }, { "unsigned int", 4 },
+    { "uint32", 4 }, { "uint32_t", 4 }, { "longlong", 8 }, { "long long", 8 }, { "long long int", 8 },
+    { "signed long long", 8 }, { "signed long long int", 8 }, { "int64", 8 }, { "int64_t", 8 },
+    { "ulonglong", 8 }, { "unsigned long long", 8 }, { "unsigned long long int", 8 }, { "uint64", 8 },
+    { "uint64_t", 8 }, { "float", 4 }, { "double", 8 } };
+  const auto it = sizes.find(t);
+  return it == sizes.end() ? 0 : it->second;
+}
+} // namespace
+
+void CheckNrrd(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw Error("cannot open file", path);
+  }
+  std::map<std::string, std::string> keys;
+  std::string line;
+  for (int n = 0; n < 1000 && std::getline(in, line); ++n)
+  {
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    if (line.empty())
+    {
+      break; // the data follows (when attached)
+    }
+    const auto colon = line.find(':');
+    if (line[0] == '#' || colon == std::string::npos || line.compare(0, 4, "NRRD") == 0)
+    {
+      continue;
+    }
+    std::string value = line.substr(colon + 1);
+    if (!value.empty() && value[0] == '=')
+    {
+      continue; // "key:=value" pairs are free-form
+    }
+    value.erase(0, value.find_first_not_of(" \t"));
+    keys[line.substr(0, colon)] = value;
+  }
+  const std::streamoff attachedStart = in.tellg();
+  const int esize = NrrdTypeSize(keys["type"]);
+  const std::string encoding = keys["encoding"];
+  if (esize == 0 || (encoding != "raw") || !keys.count("sizes"))
+  {
+    return; // compressed, text or unusual data: VTK checks as it reads
+  }
+  unsigned long long count = 1;
+  std::istringstream sizes(keys["sizes"]);
+  long long d;
+  while (sizes >> d)
+  {
+    if (d <= 0 || static_cast<unsigned long long>(d) > (1ULL << 48) / count)
+    {
+      throw Error("sizes '" + keys["sizes"] + "' are not positive or too large", path);
+    }
+    count *= static_cast<unsigned long long>(d);
+  }
+  long long skip = 0;
+  if (keys.count("byte skip"))
+  {
+    skip = std::atoll(keys["byte skip"].c_str());
+    if (skip < 0)
+    {
+      return; // -1: the data are the file's last bytes
+    }
+  }
+  std::string dataFile = path;
+  long long start = attachedStart;
+  const std::string df = keys.count("data file") ? keys["data file"] : keys["datafile"];
+  if (!df.empty())
+  {
+    if (df.find(' ') != std::string::npos || df.find('%') != std::string::npos || df.compare(0, 4, "LIST") == 0)
+    {
+      return; // a list of files: VTK checks each
+    }
+    dataFile = (fs::path(df).is_absolute() ? fs::path(df) : fs::path(path).parent_path() / df).string();
+    start = 0;
+    std::error_code ec;
+    if (!fs::exists(dataFile, ec))
+    {
+      throw Error("data file '" + df + "' named in the header does not exist", path);
+    }
+  }
+  std::error_code ec;
+  const long long have = static_cast<long long>(fs::file_size(dataFile, ec)) - start - skip;
+  const long long need = static_cast<long long>(count) * esize;
+  if (have < need)
+  {
+    throw Error("truncated: header promises " + std::to_string(need) + " data bytes, file holds " +
+        std::to_string(std::max(0LL, have)),
+      path);
+  }
+}
+} // namespace art

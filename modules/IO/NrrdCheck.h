@@ -1,0 +1,18 @@
+// NrrdCheck: reads a NRRD header and checks that raw data (attached or in its "data file") holds
+// as many bytes as the sizes and type promise, before vtkNrrdReader sees it (which reports a
+// short file as "File operation failed: 18446744073709305856, ext: ...").
+#ifndef art_NrrdCheck_h
+#define art_NrrdCheck_h
+
+#include "AdaptiveRTIOModule.h"
+
+#include <string>
+
+namespace art
+{
+/// Throws art::Error naming `path` when raw NRRD data is shorter than the header promises.
+/// Compressed encodings, data file lists and byte skip -1 are left to VTK.
+ADAPTIVERTIO_EXPORT void CheckNrrd(const std::string& path);
+} // namespace art
+
+#endif
