@@ -31,6 +31,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -126,7 +127,7 @@ art::RenderSettings MakeSettings(const cli::Options& o, art::TransferFunction tf
     {
       char* end = nullptr;
       const double v = std::strtod(item.c_str(), &end);
-      if (item.empty() || *end != '\0')
+      if (item.empty() || *end != '\0' || !std::isfinite(v))
       {
         throw cli::UsageError("--iso expects numbers separated by commas, got '" + o.Get("iso") + "'");
       }
@@ -166,6 +167,12 @@ int Run(const cli::Options& o, const std::string& input)
         input);
     }
     volume->GetPointData()->GetScalars()->GetRange(range);
+    if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
+    {
+      throw art::Error("the scalars hold infinite values (range " + std::to_string(range[0]) + " .. " +
+          std::to_string(range[1]) + ")",
+        input);
+    }
     settings = MakeSettings(o, MakeTF(o, volume, range[0], range[1]));
     if (!o.Flag("reference"))
     {

@@ -206,7 +206,10 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
       {
         ++e;
       }
-      if (e - r > 2 || (e - r == 2 && faces[r].odd == faces[r + 1].odd))
+      // Two tets on one side of their face overlap; a flat tet (zero volume, as Delaunay meshes
+      // of lattice points have) has no side, so it links either way.
+      if (e - r > 2 || (e - r == 2 && faces[r].odd == faces[r + 1].odd && volume[faces[r].ref / 4] > 0 &&
+                         volume[faces[r + 1].ref / 4] > 0))
       {
         return { static_cast<int>(r), static_cast<int>(e - r) };
       }

@@ -214,7 +214,7 @@ double TransferFunction::SampleSpacing(vtkDataSet* data)
     const double h = axes > 0 ? std::pow(product, 1.0 / axes) : 1.0;
     return h > 0.0 && std::isfinite(h) ? h : 1.0;
   }
-  if (vtkDataArray* a = data->GetFieldData() ? data->GetFieldData()->GetArray("SourceSpacing") : nullptr)
+  if (vtkDataArray* a = data->GetFieldData() ? data->GetFieldData()->GetArray("source_spacing") : nullptr)
   {
     const double h = a->GetNumberOfTuples() > 0 ? a->GetComponent(0, 0) : 0.0;
     if (h > 0.0 && std::isfinite(h))
@@ -232,7 +232,11 @@ TransferFunction TransferFunction::Preset(const std::string& name, double lo, do
 {
   if (!(hi > lo))
   {
-    hi = lo + 1.0;
+    // A constant field: its value in the middle of the preset, so it shows as a uniform haze
+    // rather than at the preset's clear end.
+    const double w = std::max(1.0, 1e-3 * std::fabs(lo));
+    lo -= w;
+    hi += w;
   }
   // CT presets in Hounsfield units when the data look like CT, else at fractions of the range.
   const bool hu = LooksLikeHU(lo, hi);

@@ -24,6 +24,13 @@ VoxelReferenceCaster::VoxelReferenceCaster(std::vector<double> values, const int
   {
     throw Error("reference caster needs at least 2 x 2 x 2 voxels");
   }
+  for (std::size_t i = 0; i < V.size(); ++i)
+  {
+    if (!std::isfinite(V[i]))
+    {
+      throw Error("the scalars hold a NaN or infinite value (voxel " + std::to_string(i) + ")");
+    }
+  }
   Box = Box3(O, O + Vec3((D[0] - 1) * H.x, (D[1] - 1) * H.y, (D[2] - 1) * H.z));
 }
 
@@ -85,7 +92,9 @@ double VoxelReferenceCaster::Sample(const Vec3& p) const
   int i[3];
   for (int a = 0; a < 3; ++a)
   {
-    const double u = std::min(std::max((p[a] - O[a]) / H[a], 0.0), double(D[a] - 1));
+    // Clamped so that a NaN position lands on voxel 0 instead of an undefined index.
+    const double q = (p[a] - O[a]) / H[a], top = double(D[a] - 1);
+    const double u = q > 0.0 ? (q < top ? q : top) : 0.0;
     i[a] = std::min(static_cast<int>(u), D[a] - 2);
     f[a] = u - i[a];
   }
@@ -174,6 +183,10 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
           ++c.rays;
           // Into the volume's own frame (a rotation about the origin: t and lengths unchanged).
           Ray r = cam.Generate(x, y);
+          if (!r.IsValid())
+          {
+            continue;
+          }
           if (Rotated)
           {
             const Vec3 q = r.org - O, d = r.dir;

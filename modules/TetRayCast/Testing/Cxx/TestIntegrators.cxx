@@ -233,5 +233,9 @@ TEST(TransferFunction, FileAndPresetErrors)
   EXPECT_THROW(TransferFunction::FromFile(dir + "/no-such-tf.txt"), Error);
   EXPECT_THROW(TransferFunction::Preset("rainbow", 0, 1), Error);
   for (const auto& name : TransferFunction::PresetNames())
+  {
     EXPECT_GE(TransferFunction::Preset(name, -1024, 3071).Nodes().size(), 2u) << name;
+    // A constant field sits inside the preset, not at its clear end: it renders as a haze.
+    EXPECT_GT(TransferFunction::Preset(name, 7, 7).Alpha(7), 0.01) << name;
+  }
 }

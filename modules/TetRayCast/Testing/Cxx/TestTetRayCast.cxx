@@ -599,7 +599,7 @@ TEST(TransferFunction, PresetScalesWithTheSampleSpacing)
   EXPECT_EQ(TransferFunction::PresetUnitDistance(0, 255, 0.5), 0.5);
 }
 
-// Spacing of data other than images: the reducer's SourceSpacing field, else the mean point spacing
+// Spacing of data other than images: the reducer's source_spacing field, else the mean point spacing
 // over the non-flat axes of the bounds.
 TEST(TransferFunction, SampleSpacingOfMeshes)
 {
@@ -610,7 +610,7 @@ TEST(TransferFunction, SampleSpacingOfMeshes)
   g->SetPoints(p);
   EXPECT_NEAR(TransferFunction::SampleSpacing(g), 1.8 / 10, 1e-7); // (1.8^3 / 1000)^(1/3), float points
   vtkNew<vtkDoubleArray> h;
-  h->SetName("SourceSpacing");
+  h->SetName("source_spacing");
   h->InsertNextValue(0.25);
   g->GetFieldData()->AddArray(h);
   EXPECT_EQ(TransferFunction::SampleSpacing(g), 0.25);
@@ -640,4 +640,49 @@ TEST(TetMesh, FullResolutionMemoryGuard)
     EXPECT_NE(what.find("--tets"), std::string::npos) << what;
   }
   EXPECT_THROW(TetMesh::CheckFullResolutionFits(1LL << 29, 0.0, "big.mha"), Error);
+}
+
+// A flat tet (four coplanar points, as Delaunay meshes of lattice points have) has no side of its
+// faces: it is linked to its neighbour, not reported as an overlap.
+TEST(TetMesh, FlatTetBesideANormalOneIsLinked)
+{
+  vtkNew<vtkUnstructuredGrid> ug;
+  vtkNew<vtkPoints> pts;
+  const double p[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 0 } };
+  vtkNew<vtkDoubleArray> s;
+  for (int i = 0; i < 5; ++i)
+  {
+    pts->InsertNextPoint(p[i]);
+    s->InsertNextValue(i);
+  }
+  ug->SetPoints(pts);
+  ug->GetPointData()->SetScalars(s);
+  vtkIdType normal[4] = { 0, 1, 2, 3 }, flat[4] = { 0, 1, 2, 4 };
+  ug->InsertNextCell(VTK_TETRA, 4, normal);
+  ug->InsertNextCell(VTK_TETRA, 4, flat);
+  const TetMesh m = TetMesh::FromVTK(ug, {}, nullptr, "flat.vtu");
+  EXPECT_EQ(m.BoundaryFaces().size(), 6u); // 8 faces, one pair shared
+}
+
+// Non-finite voxels are a clear error naming the file, not a crash in the reference.
+TEST(VoxelReference, NonFiniteVoxelsAreAnError)
+{
+  vtkNew<vtkImageData> v;
+  v->SetDimensions(3, 3, 3);
+  vtkNew<vtkDoubleArray> s;
+  s->SetNumberOfTuples(27);
+  s->Fill(1.0);
+  s->SetValue(13, std::nan(""));
+  v->GetPointData()->SetScalars(s);
+  const TransferFunction tf = TransferFunction::Preset("grey-ramp", 0, 1);
+  try
+  {
+    VoxelReferenceCaster::FromVTK(v, tf, "nan.mha");
+    FAIL() << "a NaN voxel accepted";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("nan.mha: the scalars hold a NaN or infinite value (voxel 13)"),
+      std::string::npos) << e.what();
+  }
 }
