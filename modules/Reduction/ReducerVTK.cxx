@@ -187,6 +187,7 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bo
   field("mean_radius_ratio", q.MeanRadiusRatio);
   field("scalar_range_min", m.Range[0]);
   field("scalar_range_max", m.Range[1]);
+  field("source_spacing", m.SourceSpacing);
   return grid;
 }
 

@@ -16,8 +16,10 @@ void VoxelVolume::Validate(const std::string& file)
   }
   if (Dims[0] < 2 || Dims[1] < 2 || Dims[2] < 2)
   {
-    throw Error("a 2-D image (" + std::to_string(Dims[0]) + " x " + std::to_string(Dims[1]) +
-        " x " + std::to_string(Dims[2]) + ") cannot be reduced to tetrahedra; it needs at least 2 voxels along each axis",
+    const int flat = (Dims[0] < 2) + (Dims[1] < 2) + (Dims[2] < 2);
+    throw Error(std::string(flat == 1 ? "a 2-D image (" : (flat == 2 ? "a 1-D image (" : "a single voxel (")) +
+        std::to_string(Dims[0]) + " x " + std::to_string(Dims[1]) + " x " + std::to_string(Dims[2]) +
+        ") cannot be reduced to tetrahedra; it needs at least 2 voxels along each axis",
       file);
   }
   if (Dims[0] > 16384 || Dims[1] > 16384 || Dims[2] > 16384)

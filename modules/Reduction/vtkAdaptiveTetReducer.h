@@ -10,7 +10,8 @@
  * Output port 0: vtkUnstructuredGrid of VTK_TETRA with point scalars named like the input (the
  * fit at each vertex), cell arrays "approximation_error" (RMS over the voxels a tet owns) and
  * "max_error", and field data rms_error, max_error, tets, vertices, build_seconds,
- * target_tets, target_error. Output port 1: a vtkMultiBlockDataSet holding one such grid per
+ * target_tets, target_error and source_spacing (the input's mean voxel spacing, which a
+ * transfer-function preset's opacity unit distance follows). Output port 1: a vtkMultiBlockDataSet holding one such grid per
  * level added with AddLevel (a nested series from one run, coarsest first) and the final grid.
  *
  * The reduced array is the point scalars, or the one given with SetInputArrayToProcess(0, 0, 0,

@@ -52,7 +52,7 @@ public:
   /// (ParaView likewise scales its unit distance to the data).
   static double PresetUnitDistance(double lo, double hi, double h);
   /// Mean sample spacing of a data set: an image's geometric mean spacing over its axes of more
-  /// than one sample; for other data the field "SourceSpacing" (which the reducer writes, so a
+  /// than one sample; for other data the field "source_spacing" (which the reducer writes, so a
   /// reduced mesh renders as its volume did), else MeanSpacing of its bounds and points.
   static double SampleSpacing(vtkDataSet* data);
   /// (volume of the box over its non-flat axes / points)^(1 / those axes); 1 when undefined.

@@ -252,6 +252,16 @@ TEST(TetReducer, BadInputIsAClearError)
       }
     },
     art::Error);
+  const int one[3] = { 1, 1, 1 };
+  try
+  {
+    art::VolumeFromImage(Field(one, s, o, [](double, double, double) { return 3.0; }), "one.vti");
+    ADD_FAILURE() << "a single voxel accepted";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("a single voxel (1 x 1 x 1)"), std::string::npos) << e.what();
+  }
   const int d[3] = { 5, 5, 5 };
   auto vec = Field(d, s, o, [](double x, double, double) { return x; });
   auto three = vtkSmartPointer<vtkDoubleArray>::New();

@@ -36,6 +36,8 @@ assert g.GetPointData().GetScalars().GetName() == "ramp"
 assert g.GetPointData().GetScalars().GetDataTypeAsString() == "double"
 assert r.GetRMSError() < 1e-9, r.GetRMSError()
 assert g.GetBounds() == ramp.GetBounds(), (g.GetBounds(), ramp.GetBounds())
+# The input's mean voxel spacing travels with the mesh: a preset's unit distance follows it.
+assert abs(g.GetFieldData().GetArray("source_spacing").GetValue(0) - 1.0) < 1e-12  # (0.5 * 1 * 2)^(1/3)
 
 # SetInputArrayToProcess picks another point array: a second, curved array is reduced instead
 # (its name on the output, and no longer reproduced exactly by 24 tets).
