@@ -59,7 +59,8 @@ vtkSmartPointer<vtkUnstructuredGrid> QuadricDecimate(vtkUnstructuredGrid* grid, 
   return out;
 }
 
-BaselineError ProbeError(vtkImageData* image, vtkUnstructuredGrid* grid, const char* scalars)
+BaselineError ProbeError(vtkImageData* image, vtkUnstructuredGrid* grid, const char* scalars,
+  std::vector<char>* coveredOut, const std::vector<char>* only)
 {
   auto probe = vtkSmartPointer<vtkProbeFilter>::New();
   probe->SetInputData(image);
@@ -75,17 +76,31 @@ BaselineError ProbeError(vtkImageData* image, vtkUnstructuredGrid* grid, const c
   }
   BaselineError e;
   double sse = 0, covered = 0;
+  long long counted = 0;
   const vtkIdType n = image->GetNumberOfPoints();
+  if (coveredOut)
+  {
+    coveredOut->assign(static_cast<std::size_t>(n), 0);
+  }
   for (vtkIdType i = 0; i < n; ++i)
   {
     const bool ok = valid->GetTuple1(i) != 0;
     const double d = orig->GetTuple1(i) - (ok ? fit->GetTuple1(i) : 0.0);
     e.Uncovered += ok ? 0 : 1;
-    sse += d * d;
     covered += ok ? d * d : 0.0;
+    if (coveredOut)
+    {
+      (*coveredOut)[i] = ok ? 1 : 0;
+    }
+    if (only && !(*only)[i])
+    {
+      continue;
+    }
+    ++counted;
+    sse += d * d;
     e.Max = std::max(e.Max, std::fabs(d));
   }
-  e.Rms = std::sqrt(sse / static_cast<double>(n));
+  e.Rms = counted > 0 ? std::sqrt(sse / static_cast<double>(counted)) : 0.0;
   e.CoveredRms = n > e.Uncovered ? std::sqrt(covered / static_cast<double>(n - e.Uncovered)) : 0.0;
   e.Vertices = grid->GetNumberOfPoints();
   e.Tets = grid->GetNumberOfCells();

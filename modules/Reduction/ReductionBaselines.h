@@ -10,6 +10,8 @@
 
 #include <vtkSmartPointer.h>
 
+#include <vector>
+
 class vtkImageData;
 class vtkUnstructuredGrid;
 
@@ -31,8 +33,10 @@ ADAPTIVERTREDUCTION_EXPORT vtkSmartPointer<vtkUnstructuredGrid> QuadricDecimate(
   vtkUnstructuredGrid* grid, long long tets, const char* scalars);
 
 /// Probes `grid` (its point scalars named `scalars`) at every voxel centre of `image` with
-/// vtkProbeFilter and compares with the voxels.
-ADAPTIVERTREDUCTION_EXPORT BaselineError ProbeError(vtkImageData* image, vtkUnstructuredGrid* grid, const char* scalars);
+/// vtkProbeFilter and compares with the voxels. `covered` (when given) receives which voxel
+/// centres the grid covers; with `only`, Rms and Max are taken over those voxels alone.
+ADAPTIVERTREDUCTION_EXPORT BaselineError ProbeError(vtkImageData* image, vtkUnstructuredGrid* grid, const char* scalars,
+  std::vector<char>* covered = nullptr, const std::vector<char>* only = nullptr);
 
 /// Samples the volume on a uniform grid of about `vertices` nodes spanning the same box (shaped
 /// to the volume's aspect, trilinear sampling, no pre-filter) and reconstructs every voxel from

@@ -19,6 +19,9 @@ for ax, key, label in ((axes[0], "rms", "RMS error"), (axes[1], "max", "max erro
         if key == "rms":
             ax.plot([r["quadric_tets"] for r in rows], [r["quadric_covered_rms"] for r in rows], "s:",
                     color="C1", alpha=0.6, label="quadric, covered voxels only")
+            if "ours_at_quadric_tets_covered_rms" in rows[0]:
+                ax.plot([r["ours_at_quadric_tets"] for r in rows], [r["ours_at_quadric_tets_covered_rms"] for r in rows],
+                        "o:", color="C0", alpha=0.6, label="ours at its tets, on the voxels it covers")
     ax.plot([r["uniform_tets"] for r in rows], [r["uniform_" + key] for r in rows], "^:",
             label="uniform downsampling (same vertices)")
     ax.set_xscale("log")
