@@ -62,6 +62,10 @@ void Declare(cli::Options& o)
   o.Add("max-error", 0, "E",
     "reduce a volume until the RMS error (opacity-weighted unless --plain-reduction) is at most E data units "
     "(E% of the scalar range)");
+  o.Add("refinement", 0, "bisection|edge",
+    "how a volume is reduced: bisection (newest-vertex, near-regular tets) or edge (split the edges that remove the "
+    "most error: thin tets along sharp surfaces, sharper images per tet, slower)",
+    "bisection");
   o.Add("plain-reduction", 0, "",
     "reduce in plain L2, not weighted by the transfer function's opacity (a few times faster on large volumes)");
   o.Add("reference", 0, "", "render the full-resolution voxel reference instead");
@@ -180,6 +184,13 @@ int Run(const cli::Options& o, const std::string& input)
       {
 #ifdef ART_HAVE_Reduction
         art::ReducerOptions ro;
+        const std::string refinement = o.Get("refinement");
+        if (refinement != "bisection" && refinement != "edge")
+        {
+          throw cli::UsageError("--refinement is bisection or edge, got '" + refinement + "'");
+        }
+        ro.Refine = refinement == "edge" ? art::ReducerOptions::Refinement::EdgeSplit
+                                         : art::ReducerOptions::Refinement::Bisection;
         const long long voxels = volume->GetNumberOfPoints();
         if (o.Has("tets"))
         {
