@@ -2,6 +2,7 @@
 #include "BisectionMesh.h"
 #include "LeastSquaresFit.h"
 #include "MeshQuality.h"
+#include "ReductionFixtures.h"
 #include "VoxelRaster.h"
 
 #include <gtest/gtest.h>
@@ -9,37 +10,7 @@
 #include <numeric>
 #include <random>
 
-namespace
-{
-art::QualityReport Check(const art::BisectionMesh& m)
-{
-  std::vector<double> p;
-  for (int v = 0; v < m.NumberOfVertices(); ++v)
-  {
-    const auto& q = m.Vertex(v);
-    p.insert(p.end(), { double(q.x), double(q.y), double(q.z) });
-  }
-  std::vector<int> t;
-  for (int i = 0; i < m.NumberOfTets(); ++i)
-  {
-    auto v = m.Tet(i);
-    // MeasureQuality wants positive orientation; Maubach order has either sign.
-    const auto &a = m.Vertex(v[0]), &b = m.Vertex(v[1]), &c = m.Vertex(v[2]), &d = m.Vertex(v[3]);
-    const double e[3][3] = { { double(b.x - a.x), double(b.y - a.y), double(b.z - a.z) },
-      { double(c.x - a.x), double(c.y - a.y), double(c.z - a.z) },
-      { double(d.x - a.x), double(d.y - a.y), double(d.z - a.z) } };
-    const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-      e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-    EXPECT_NE(det, 0.0);
-    if (det < 0)
-    {
-      std::swap(v[1], v[2]);
-    }
-    t.insert(t.end(), v.begin(), v.end());
-  }
-  return art::MeasureQuality(p.data(), m.NumberOfVertices(), t.data(), m.NumberOfTets());
-}
-} // namespace
+using fixtures::Check;
 
 TEST(BisectionMesh, KuhnCoarseMeshIsConforming)
 {

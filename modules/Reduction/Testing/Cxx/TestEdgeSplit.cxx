@@ -8,6 +8,7 @@
 #include "LeastSquaresFit.h"
 #include "ParallelTiles.h"
 #include "ReducerVTK.h"
+#include "ReductionFixtures.h"
 #include "TetReducer.h"
 #include "VoxelRaster.h"
 
@@ -21,64 +22,16 @@
 #include <functional>
 #include <random>
 
+using fixtures::Check;
+using fixtures::ExpectValid;
+using fixtures::SignedVolume6;
+
 namespace
 {
-double SignedVolume6(const art::BisectionMesh& m, int t)
-{
-  const auto v = m.Tet(t);
-  const auto &a = m.Vertex(v[0]), &b = m.Vertex(v[1]), &c = m.Vertex(v[2]), &d = m.Vertex(v[3]);
-  const double e[3][3] = { { double(b.x - a.x), double(b.y - a.y), double(b.z - a.z) },
-    { double(c.x - a.x), double(c.y - a.y), double(c.z - a.z) },
-    { double(d.x - a.x), double(d.y - a.y), double(d.z - a.z) } };
-  return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-    e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-}
-
-art::QualityReport Check(const art::BisectionMesh& m)
-{
-  std::vector<double> p;
-  for (int v = 0; v < m.NumberOfVertices(); ++v)
-  {
-    const auto& q = m.Vertex(v);
-    p.insert(p.end(), { double(q.x), double(q.y), double(q.z) });
-  }
-  std::vector<int> t;
-  for (int i = 0; i < m.NumberOfTets(); ++i)
-  {
-    auto v = m.Tet(i);
-    if (SignedVolume6(m, i) < 0)
-    {
-      std::swap(v[1], v[2]);
-    }
-    t.insert(t.end(), v.begin(), v.end());
-  }
-  return art::MeasureQuality(p.data(), m.NumberOfVertices(), t.data(), m.NumberOfTets());
-}
-
 vtkSmartPointer<vtkImageData> Field(const int d[3], const std::function<double(double, double, double)>& f)
 {
-  auto img = vtkSmartPointer<vtkImageData>::New();
-  img->SetDimensions(d[0], d[1], d[2]);
-  img->SetSpacing(1.0, 0.8, 1.5);
-  img->SetOrigin(2.0, -1.0, 0.5);
-  auto a = vtkSmartPointer<vtkDoubleArray>::New();
-  a->SetName("density");
-  a->SetNumberOfTuples(img->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < img->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    img->GetPoint(i, p);
-    a->SetTuple1(i, f(p[0], p[1], p[2]));
-  }
-  img->GetPointData()->SetScalars(a);
-  return img;
-}
-
-void ExpectValid(const art::ReducedMesh& m)
-{
-  const auto q = art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets());
-  EXPECT_TRUE(q.Valid()) << q.Summary();
-  EXPECT_EQ(q.InteriorFaces * 2 + q.BoundaryFaces, 4 * m.NumberOfTets());
+  static const double spacing[3] = { 1.0, 0.8, 1.5 }, origin[3] = { 2.0, -1.0, 0.5 };
+  return fixtures::Field(d, spacing, origin, f);
 }
 
 art::ReducerOptions EdgeOptions()

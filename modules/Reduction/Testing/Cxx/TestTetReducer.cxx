@@ -4,6 +4,7 @@
 #include "MeshQuality.h"
 #include "ParallelTiles.h"
 #include "ReducerVTK.h"
+#include "ReductionFixtures.h"
 #include "TetReducer.h"
 
 #include <vtkDataArray.h>
@@ -20,46 +21,11 @@
 #include <cmath>
 #include <functional>
 
+using fixtures::ExpectValid;
+using fixtures::Field;
+
 namespace
 {
-vtkSmartPointer<vtkImageData> Field(const int d[3], const double spacing[3], const double origin[3],
-  const std::function<double(double, double, double)>& f, bool shortValues = false)
-{
-  auto img = vtkSmartPointer<vtkImageData>::New();
-  img->SetDimensions(d[0], d[1], d[2]);
-  img->SetSpacing(spacing[0], spacing[1], spacing[2]);
-  img->SetOrigin(origin[0], origin[1], origin[2]);
-  vtkSmartPointer<vtkDataArray> a;
-  if (shortValues)
-  {
-    a = vtkSmartPointer<vtkShortArray>::New();
-  }
-  else
-  {
-    a = vtkSmartPointer<vtkDoubleArray>::New();
-  }
-  a->SetName("density");
-  a->SetNumberOfTuples(img->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < img->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    img->GetPoint(i, p);
-    a->SetTuple1(i, f(p[0], p[1], p[2]));
-  }
-  img->GetPointData()->SetScalars(a);
-  return img;
-}
-
-void ExpectValid(const art::ReducedMesh& m)
-{
-  const auto q = art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets());
-  EXPECT_TRUE(q.Valid()) << q.Summary();
-  EXPECT_EQ(q.Inverted, 0);
-  EXPECT_EQ(q.OpenFaces, 0);
-  EXPECT_EQ(q.OverSharedFaces, 0);
-  EXPECT_EQ(q.InteriorFaces * 2 + q.BoundaryFaces, 4 * m.NumberOfTets());
-}
-
 double FieldValue(vtkFieldData* fd, const char* name)
 {
   vtkDataArray* a = fd->GetArray(name);

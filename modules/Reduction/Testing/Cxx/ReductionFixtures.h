@@ -1,0 +1,103 @@
+// Shared by the Reduction tests: analytic fields as images, and the validity checks every
+// reduced or refined mesh must pass (orientation, conformity, a face shared by at most two tets).
+#ifndef art_ReductionFixtures_h
+#define art_ReductionFixtures_h
+
+#include "BisectionMesh.h"
+#include "MeshQuality.h"
+#include "TetReducer.h"
+
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkShortArray.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace fixtures
+{
+/// An image of f sampled at its points, as a "density" array of doubles (or shorts).
+inline vtkSmartPointer<vtkImageData> Field(const int d[3], const double spacing[3], const double origin[3],
+  const std::function<double(double, double, double)>& f, bool shortValues = false)
+{
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->SetDimensions(d[0], d[1], d[2]);
+  img->SetSpacing(spacing[0], spacing[1], spacing[2]);
+  img->SetOrigin(origin[0], origin[1], origin[2]);
+  vtkSmartPointer<vtkDataArray> a;
+  if (shortValues)
+  {
+    a = vtkSmartPointer<vtkShortArray>::New();
+  }
+  else
+  {
+    a = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  a->SetName("density");
+  a->SetNumberOfTuples(img->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < img->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    img->GetPoint(i, p);
+    a->SetTuple1(i, f(p[0], p[1], p[2]));
+  }
+  img->GetPointData()->SetScalars(a);
+  return img;
+}
+
+/// A reduced mesh: positively oriented, conforming, each face in one or two tets.
+inline void ExpectValid(const art::ReducedMesh& m)
+{
+  const auto q = art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets());
+  EXPECT_TRUE(q.Valid()) << q.Summary();
+  EXPECT_EQ(q.Inverted, 0);
+  EXPECT_EQ(q.OpenFaces, 0);
+  EXPECT_EQ(q.OverSharedFaces, 0);
+  EXPECT_EQ(q.InteriorFaces * 2 + q.BoundaryFaces, 4 * m.NumberOfTets());
+}
+
+/// Six times the signed volume of tet t, in lattice units.
+inline double SignedVolume6(const art::BisectionMesh& m, int t)
+{
+  const auto v = m.Tet(t);
+  const auto &a = m.Vertex(v[0]), &b = m.Vertex(v[1]), &c = m.Vertex(v[2]), &d = m.Vertex(v[3]);
+  const double e[3][3] = { { double(b.x - a.x), double(b.y - a.y), double(b.z - a.z) },
+    { double(c.x - a.x), double(c.y - a.y), double(c.z - a.z) },
+    { double(d.x - a.x), double(d.y - a.y), double(d.z - a.z) } };
+  return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+    e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+}
+
+/// MeasureQuality of a bisection mesh (its tets turned positive: bisection order has either sign);
+/// no tet may be flat.
+inline art::QualityReport Check(const art::BisectionMesh& m)
+{
+  std::vector<double> p;
+  for (int v = 0; v < m.NumberOfVertices(); ++v)
+  {
+    const auto& q = m.Vertex(v);
+    p.insert(p.end(), { double(q.x), double(q.y), double(q.z) });
+  }
+  std::vector<int> t;
+  for (int i = 0; i < m.NumberOfTets(); ++i)
+  {
+    auto v = m.Tet(i);
+    const double det = SignedVolume6(m, i);
+    EXPECT_NE(det, 0.0);
+    if (det < 0)
+    {
+      std::swap(v[1], v[2]);
+    }
+    t.insert(t.end(), v.begin(), v.end());
+  }
+  return art::MeasureQuality(p.data(), m.NumberOfVertices(), t.data(), m.NumberOfTets());
+}
+} // namespace fixtures
+
+#endif
