@@ -5,6 +5,7 @@
 
 #include "BisectionMesh.h"
 #include "MeshQuality.h"
+#include "ParallelTiles.h"
 #include "TetReducer.h"
 
 #include <vtkDataArray.h>
@@ -60,6 +61,22 @@ inline void ExpectValid(const art::ReducedMesh& m)
   EXPECT_EQ(q.OpenFaces, 0);
   EXPECT_EQ(q.OverSharedFaces, 0);
   EXPECT_EQ(q.InteriorFaces * 2 + q.BoundaryFaces, 4 * m.NumberOfTets());
+}
+
+/// Runs opt on v with 1 and with 2 threads: the same tets, points, fit and error; returns the mesh.
+inline art::ReducedMesh ExpectSameForOneAndTwoThreads(const art::ReducerOptions& opt, const art::VoxelVolume& v)
+{
+  const int before = art::GetThreadCount();
+  art::SetThreadCount(1);
+  const auto a = art::TetReducer(opt).Run(v);
+  art::SetThreadCount(2);
+  const auto b = art::TetReducer(opt).Run(v);
+  art::SetThreadCount(before);
+  EXPECT_EQ(a.back().Tets, b.back().Tets);
+  EXPECT_EQ(a.back().Points, b.back().Points);
+  EXPECT_EQ(a.back().Values, b.back().Values);
+  EXPECT_EQ(a.back().Rms, b.back().Rms);
+  return a.back();
 }
 
 /// Six times the signed volume of tet t, in lattice units.

@@ -229,16 +229,5 @@ TEST(EdgeSplit, DeterministicForAnyThreadCount)
   auto vol = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/data/ct-head-128.mha");
   auto opt = EdgeOptions();
   opt.TargetTets = 2500;
-  const auto v = art::VolumeFromImage(vol);
-  const int before = art::GetThreadCount();
-  art::SetThreadCount(1);
-  const auto a = art::TetReducer(opt).Run(v);
-  art::SetThreadCount(2);
-  const auto b = art::TetReducer(opt).Run(v);
-  art::SetThreadCount(before);
-  ASSERT_EQ(a.back().Tets, b.back().Tets);
-  ASSERT_EQ(a.back().Points, b.back().Points);
-  EXPECT_EQ(a.back().Values, b.back().Values);
-  EXPECT_EQ(a.back().Rms, b.back().Rms);
-  ExpectValid(a.back());
+  ExpectValid(fixtures::ExpectSameForOneAndTwoThreads(opt, art::VolumeFromImage(vol)));
 }

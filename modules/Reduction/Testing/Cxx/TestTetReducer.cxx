@@ -142,17 +142,7 @@ TEST(TetReducer, DeterministicForAnyThreadCount)
   auto vol = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/data/ct-head-128.mha");
   art::ReducerOptions opt;
   opt.TargetTets = 3000;
-  const auto v = art::VolumeFromImage(vol);
-  const int before = art::GetThreadCount();
-  art::SetThreadCount(1);
-  const auto a = art::TetReducer(opt).Run(v);
-  art::SetThreadCount(2);
-  const auto b = art::TetReducer(opt).Run(v);
-  art::SetThreadCount(before);
-  ASSERT_EQ(a.back().Tets, b.back().Tets);
-  ASSERT_EQ(a.back().Points, b.back().Points);
-  EXPECT_EQ(a.back().Values, b.back().Values);
-  EXPECT_EQ(a.back().Rms, b.back().Rms);
+  fixtures::ExpectSameForOneAndTwoThreads(opt, art::VolumeFromImage(vol));
 }
 
 TEST(TetReducer, RealCTHeadErrorMatchesAProbeAtTheVoxelCentres)
