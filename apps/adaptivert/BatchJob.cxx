@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <set>
+#include <type_traits>
 #include <fstream>
 
 namespace fs = std::filesystem;
@@ -66,6 +67,33 @@ std::vector<std::string> OptionsToArgs(const json& s, std::string& text, const s
   return args;
 }
 
+// A job field of the expected JSON type, or an error naming the field and what it holds.
+template <class T>
+T Field(const json& o, const char* key, T fallback, const std::string& file)
+{
+  if (!o.is_object() || !o.contains(key))
+  {
+    return fallback;
+  }
+  const json& v = o.at(key);
+  if constexpr (std::is_same_v<T, std::string>)
+  {
+    if (v.is_string())
+    {
+      return v.get<std::string>();
+    }
+    throw art::Error(std::string("\"") + key + "\" must be a string, got " + v.dump(), file);
+  }
+  else
+  {
+    if (v.is_number())
+    {
+      return v.get<T>();
+    }
+    throw art::Error(std::string("\"") + key + "\" must be a number, got " + v.dump(), file);
+  }
+}
+
 std::vector<Cam> Cameras(const json& j, const std::string& file)
 {
   std::vector<Cam> cams;
@@ -75,21 +103,21 @@ std::vector<Cam> Cameras(const json& j, const std::string& file)
   }
   else if (j.is_object())
   {
-    const int n = j.value("orbit", 1);
+    const int n = Field(j, "orbit", 1, file);
     if (n < 1 || n > 100000)
     {
       throw art::Error("cameras.orbit must be 1..100000", file);
     }
     for (int i = 0; i < n; ++i)
     {
-      cams.push_back({ 360.0 * i / n, j.value("elevation", 0.0), j.value("zoom", 1.0) });
+      cams.push_back({ 360.0 * i / n, Field(j, "elevation", 0.0, file), Field(j, "zoom", 1.0, file) });
     }
   }
   else if (j.is_array())
   {
     for (const auto& c : j)
     {
-      cams.push_back({ c.value("azimuth", 0.0), c.value("elevation", 0.0), c.value("zoom", 1.0) });
+      cams.push_back({ Field(c, "azimuth", 0.0, file), Field(c, "elevation", 0.0, file), Field(c, "zoom", 1.0, file) });
     }
   }
   else
@@ -129,12 +157,12 @@ BatchJob LoadBatchJob(const std::string& path)
     const fs::path base = fs::absolute(path).parent_path();
     BatchJob job;
     job.file = path;
-    job.outputDir = (base / j.value("output", std::string("frames"))).lexically_normal().string();
+    job.outputDir = (base / Field(j, "output", std::string("frames"), path)).lexically_normal().string();
     if (!j.contains("datasets") || !j["datasets"].is_array() || j["datasets"].empty())
     {
       throw art::Error("needs \"datasets\": a non-empty list of files", path);
     }
-    const std::string size = j.value("size", std::string("400x400"));
+    const std::string size = Field(j, "size", std::string("400x400"), path);
     const std::vector<Cam> cams = Cameras(j.contains("cameras") ? j["cameras"] : json(), path);
     const json settings = j.contains("settings") ? j["settings"] : json::array({ json::object() });
     if (!settings.is_array() || settings.empty())
@@ -146,6 +174,10 @@ BatchJob LoadBatchJob(const std::string& path)
     std::set<std::string> stems;
     for (const auto& d : j["datasets"])
     {
+      if (!d.is_string())
+      {
+        throw art::Error("\"datasets\" must list file names, got " + d.dump(), path);
+      }
       const std::string ds = (base / d.get<std::string>()).lexically_normal().string();
       // Frames are named after the file; two files of one name (a/ct.mha, b/ct.mha) shared their
       // frames, and the second was never rendered. Later ones get -2, -3, .. (stable per job file).
