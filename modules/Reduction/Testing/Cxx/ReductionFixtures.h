@@ -7,6 +7,7 @@
 #include "MeshQuality.h"
 #include "ParallelTiles.h"
 #include "TetReducer.h"
+#include "VoxelRaster.h"
 
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -114,6 +115,34 @@ inline art::QualityReport Check(const art::BisectionMesh& m)
     t.insert(t.end(), v.begin(), v.end());
   }
   return art::MeasureQuality(p.data(), m.NumberOfVertices(), t.data(), m.NumberOfTets());
+}
+/// The lattice raster gives every voxel of dims to exactly one tet, with barycentric weights
+/// that sum to 1 and are not negative.
+inline void ExpectEachVoxelOwnedOnce(const art::BisectionMesh& m, const int dims[3])
+{
+  std::vector<int> owner(static_cast<std::size_t>(dims[0]) * dims[1] * dims[2], 0);
+  for (int t = 0; t < m.NumberOfTets(); ++t)
+  {
+    art::LatticePoint P[4];
+    for (int a = 0; a < 4; ++a)
+    {
+      P[a] = m.Vertex(m.Tet(t)[a]);
+    }
+    art::TetRaster r;
+    ASSERT_TRUE(r.Setup(P));
+    r.ForEachVoxel(dims, [&](long long idx, const double* l) {
+      ++owner[idx];
+      EXPECT_NEAR(l[0] + l[1] + l[2] + l[3], 1.0, 1e-12);
+      for (int a = 0; a < 4; ++a)
+      {
+        EXPECT_GE(l[a], -1e-12);
+      }
+    });
+  }
+  for (std::size_t i = 0; i < owner.size(); ++i)
+  {
+    ASSERT_EQ(owner[i], 1) << "voxel " << i;
+  }
 }
 } // namespace fixtures
 

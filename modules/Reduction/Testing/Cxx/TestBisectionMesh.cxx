@@ -59,27 +59,5 @@ TEST(VoxelRaster, EveryVoxelCentreBelongsToExactlyOneTet)
   {
     m.Refine((i * 7919) % m.NumberOfTets(), touched);
   }
-  std::vector<int> owner(dims[0] * dims[1] * dims[2], 0);
-  for (int t = 0; t < m.NumberOfTets(); ++t)
-  {
-    art::LatticePoint P[4];
-    for (int a = 0; a < 4; ++a)
-    {
-      P[a] = m.Vertex(m.Tet(t)[a]);
-    }
-    art::TetRaster r;
-    ASSERT_TRUE(r.Setup(P));
-    r.ForEachVoxel(dims, [&](long long idx, const double* l) {
-      ++owner[idx];
-      EXPECT_NEAR(l[0] + l[1] + l[2] + l[3], 1.0, 1e-12);
-      for (int a = 0; a < 4; ++a)
-      {
-        EXPECT_GE(l[a], -1e-12);
-      }
-    });
-  }
-  for (size_t i = 0; i < owner.size(); ++i)
-  {
-    ASSERT_EQ(owner[i], 1) << "voxel " << i;
-  }
+  fixtures::ExpectEachVoxelOwnedOnce(m, dims);
 }

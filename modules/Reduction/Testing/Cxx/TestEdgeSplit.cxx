@@ -107,22 +107,7 @@ TEST(EdgeSplit, RandomEdgeSplitsStayConformingAndOwnEveryVoxelOnce)
   const auto q = Check(m);
   EXPECT_TRUE(q.Valid()) << q.Summary();
   EXPECT_NEAR(q.Volume, 32.0 * 26 * 18 * std::pow(double(art::BisectionMesh::Scale), 3), 1e-9 * q.Volume);
-  std::vector<int> owner(dims[0] * dims[1] * dims[2], 0);
-  for (int t = 0; t < m.NumberOfTets(); ++t)
-  {
-    art::LatticePoint P[4];
-    for (int a = 0; a < 4; ++a)
-    {
-      P[a] = m.Vertex(m.Tet(t)[a]);
-    }
-    art::TetRaster r;
-    ASSERT_TRUE(r.Setup(P));
-    r.ForEachVoxel(dims, [&](long long idx, const double*) { ++owner[idx]; });
-  }
-  for (size_t i = 0; i < owner.size(); ++i)
-  {
-    ASSERT_EQ(owner[i], 1) << "voxel " << i;
-  }
+  fixtures::ExpectEachVoxelOwnedOnce(m, dims);
   // Maubach's tags no longer hold once free splits were made.
   EXPECT_THROW(m.Refine(0, touched), art::Error);
 }
