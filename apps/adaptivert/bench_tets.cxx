@@ -170,8 +170,7 @@ int Run(const cli::Options& o)
   const long long voxels = static_cast<long long>(dims[0]) * dims[1] * dims[2];
   const std::string tfName = o.Get("tets-tf");
   const art::TransferFunction tf = std::filesystem::exists(tfName) ? art::TransferFunction::FromFile(tfName)
-    : art::TransferFunction::Preset(tfName, range[0], range[1],
-        art::TransferFunction::PresetUnitDistance(range[0], range[1], art::TransferFunction::SampleSpacing(volume)));
+    : art::TransferFunction::PresetFor(tfName, volume, range[0], range[1]);
   vtkNew<vtkCamera> cam;
   cam->SetPosition(0, -1, 0);
   cam->SetFocalPoint(0, 0, 0);

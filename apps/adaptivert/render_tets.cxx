@@ -84,8 +84,7 @@ art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo,
   }
   else
   {
-    f = art::TransferFunction::Preset(
-      tf, lo, hi, art::TransferFunction::PresetUnitDistance(lo, hi, art::TransferFunction::SampleSpacing(data)));
+    f = art::TransferFunction::PresetFor(tf, data, lo, hi);
   }
   if (o.Has("unit-distance"))
   {

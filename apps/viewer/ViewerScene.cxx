@@ -101,9 +101,7 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const std:
   // A preset's unit distance follows the data (1 mm on CT in HU, else its sample spacing), as in render.
   s.Transfer = tf.find_first_of("./") != std::string::npos
     ? art::TransferFunction::FromFile(tf)
-    : art::TransferFunction::Preset(tf, s.Range[0], s.Range[1],
-        art::TransferFunction::PresetUnitDistance(
-          s.Range[0], s.Range[1], art::TransferFunction::SampleSpacing(vtkDataSet::SafeDownCast(data))));
+    : art::TransferFunction::PresetFor(tf, vtkDataSet::SafeDownCast(data), s.Range[0], s.Range[1]);
   return s;
 }
 } // namespace view

@@ -4,6 +4,7 @@
 #include "EdgeSplitRefiner.h"
 #include "Error.h"
 #include "LeastSquaresFit.h"
+#include "MeanSpacing.h"
 #include "OpacityImportance.h"
 #include "Progress.h"
 
@@ -97,18 +98,7 @@ ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const Le
   }
   out.Range[0] = vol.Range[0];
   out.Range[1] = vol.Range[1];
-  // A preset's opacity unit distance follows it (TransferFunction::SampleSpacing reads it back).
-  double product = 1.0;
-  int axes = 0;
-  for (int a = 0; a < 3; ++a)
-  {
-    if (vol.Dims[a] > 1)
-    {
-      product *= std::fabs(vol.Spacing[a]);
-      ++axes;
-    }
-  }
-  out.SourceSpacing = axes > 0 ? std::pow(product, 1.0 / axes) : 1.0;
+  out.SourceSpacing = MeanVoxelSpacing(vol.Dims, vol.Spacing); // a preset's unit distance follows it
   out.ScalarName = vol.Name;
   return out;
 }

@@ -2,6 +2,7 @@
 
 #include "EntryFinder.h"
 #include "ExactIntegrator.h"
+#include "MeanSpacing.h"
 #include "ParallelTiles.h"
 #include "Progress.h"
 #include "ProjectedWalker.h"
@@ -289,7 +290,7 @@ TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
     const double extent[3] = { e.x, e.y, e.z };
     const double lo = M.ScalarRange(0), hi = M.ScalarRange(1);
     S.tf = TransferFunction::Preset("grey-ramp", lo, hi,
-      TransferFunction::PresetUnitDistance(lo, hi, TransferFunction::MeanSpacing(extent, double(M.NumberOfPoints()))));
+      TransferFunction::PresetUnitDistance(lo, hi, MeanSpacing(extent, double(M.NumberOfPoints()))));
   }
   if (!M.IsConvex() && S.boundaryGrid)
   {

@@ -1,6 +1,7 @@
 #include "TransferFunction.h"
 
 #include "Error.h"
+#include "MeanSpacing.h"
 
 #include <vtkColorTransferFunction.h>
 #include <vtkDataArray.h>
@@ -179,40 +180,11 @@ double TransferFunction::PresetUnitDistance(double lo, double hi, double h)
   return LooksLikeHU(lo, hi) || !(h > 0.0) || !std::isfinite(h) ? 1.0 : h;
 }
 
-double TransferFunction::MeanSpacing(const double extent[3], double points)
-{
-  double volume = 1.0;
-  int axes = 0;
-  for (int k = 0; k < 3; ++k)
-  {
-    if (extent[k] > 0.0)
-    {
-      volume *= extent[k];
-      ++axes;
-    }
-  }
-  const double h = axes > 0 && points > 1 ? std::pow(volume / points, 1.0 / axes) : 1.0;
-  return h > 0.0 && std::isfinite(h) ? h : 1.0;
-}
-
 double TransferFunction::SampleSpacing(vtkDataSet* data)
 {
   if (auto* image = vtkImageData::SafeDownCast(data))
   {
-    int dims[3];
-    image->GetDimensions(dims);
-    double product = 1.0;
-    int axes = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      if (dims[k] > 1)
-      {
-        product *= std::fabs(image->GetSpacing()[k]);
-        ++axes;
-      }
-    }
-    const double h = axes > 0 ? std::pow(product, 1.0 / axes) : 1.0;
-    return h > 0.0 && std::isfinite(h) ? h : 1.0;
+    return MeanVoxelSpacing(image->GetDimensions(), image->GetSpacing());
   }
   if (vtkDataArray* a = data->GetFieldData() ? data->GetFieldData()->GetArray("source_spacing") : nullptr)
   {
@@ -226,6 +198,11 @@ double TransferFunction::SampleSpacing(vtkDataSet* data)
   data->GetBounds(b);
   const double extent[3] = { b[1] - b[0], b[3] - b[2], b[5] - b[4] };
   return MeanSpacing(extent, static_cast<double>(data->GetNumberOfPoints()));
+}
+
+TransferFunction TransferFunction::PresetFor(const std::string& name, vtkDataSet* data, double lo, double hi)
+{
+  return Preset(name, lo, hi, PresetUnitDistance(lo, hi, SampleSpacing(data)));
 }
 
 TransferFunction TransferFunction::Preset(const std::string& name, double lo, double hi, double unitDistance)

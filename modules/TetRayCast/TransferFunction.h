@@ -53,10 +53,10 @@ public:
   static double PresetUnitDistance(double lo, double hi, double h);
   /// Mean sample spacing of a data set: an image's geometric mean spacing over its axes of more
   /// than one sample; for other data the field "source_spacing" (which the reducer writes, so a
-  /// reduced mesh renders as its volume did), else MeanSpacing of its bounds and points.
+  /// reduced mesh renders as its volume did), else art::MeanSpacing of its bounds and points.
   static double SampleSpacing(vtkDataSet* data);
-  /// (volume of the box over its non-flat axes / points)^(1 / those axes); 1 when undefined.
-  static double MeanSpacing(const double extent[3], double points);
+  /// Preset with the unit distance PresetUnitDistance gives for `data` and its range [lo, hi].
+  static TransferFunction PresetFor(const std::string& name, vtkDataSet* data, double lo, double hi);
   /// A text file, one node per line: "scalar r g b opacity" ('#' comments; optional first line
   /// "unit-distance U"). Throws art::Error naming the file and line for anything malformed.
   static TransferFunction FromFile(const std::string& path);

@@ -1,6 +1,7 @@
 // The tet caster against closed forms: a linear field with a constant-opacity transfer function,
 // two tetrahedralisations, thread counts, a sphere's distance field iso-surface, and bad meshes.
 #include "Error.h"
+#include "MeanSpacing.h"
 #include "MeshFixtures.h"
 #include "ParallelTiles.h"
 #include "TetRayCaster.h"
@@ -615,9 +616,9 @@ TEST(TransferFunction, SampleSpacingOfMeshes)
   g->GetFieldData()->AddArray(h);
   EXPECT_EQ(TransferFunction::SampleSpacing(g), 0.25);
   const double flat[3] = { 4.0, 0.0, 9.0 }; // a slab: spacing over its two axes
-  EXPECT_NEAR(TransferFunction::MeanSpacing(flat, 36), 1.0, 1e-12);
+  EXPECT_NEAR(MeanSpacing(flat, 36), 1.0, 1e-12);
   const double none[3] = { 0, 0, 0 };
-  EXPECT_EQ(TransferFunction::MeanSpacing(none, 1), 1.0);
+  EXPECT_EQ(MeanSpacing(none, 1), 1.0);
 }
 
 // Full-resolution tets that would not fit are refused before anything is built, naming the file
