@@ -223,7 +223,8 @@ int Run(const cli::Options& o)
       t0 = Clock::now();
       grid = art::QuadricDecimate(grid, w.tets, volume.Name.c_str());
       cumulative += Seconds(t0);
-      const art::BaselineError e = art::ProbeError(image, grid, volume.Name.c_str());
+      std::vector<char> covered;
+      const art::BaselineError e = art::ProbeError(image, grid, volume.Name.c_str(), &covered);
       w.qTets = e.Tets;
       w.qVertices = e.Vertices;
       w.qRms = e.Rms;
@@ -232,8 +233,6 @@ int Run(const cli::Options& o)
       w.qCoveredRms = e.CoveredRms;
       w.qInverted = art::MeasureQuality(grid).Inverted;
       w.qSeconds = cumulative;
-      std::vector<char> covered;
-      art::ProbeError(image, grid, volume.Name.c_str(), &covered);
       art::ReducerOptions at = opt;
       at.Levels.clear();
       at.TargetTets = w.qTets;
