@@ -36,4 +36,13 @@ double ParseMaxError(const std::string& s, bool& relative)
   }
   return relative ? v / 100.0 : v;
 }
+
+bool ParseEdgeRefinement(const std::string& s, const std::string& what)
+{
+  if (s != "bisection" && s != "edge")
+  {
+    throw UsageError(what + " is bisection or edge, got '" + s + "'");
+  }
+  return s == "edge";
+}
 } // namespace cli

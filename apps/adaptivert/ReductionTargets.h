@@ -1,5 +1,6 @@
 // ReductionTargets: the reducer's stopping targets as the command line spells them, shared by
-// `reduce` and `render`: --tets N or P% (of the voxel count), --max-error E or P% (of the range).
+// `reduce` and `render`: --tets N or P% (of the voxel count), --max-error E or P% (of the range),
+// and how it refines, --refinement bisection|edge.
 #ifndef adaptivert_ReductionTargets_h
 #define adaptivert_ReductionTargets_h
 
@@ -11,6 +12,9 @@ namespace cli
 long long ParseBudget(const std::string& s, long long voxels, const std::string& what);
 /// "E" or "P%" -> the error bound and whether it is a fraction of the scalar range (P / 100).
 double ParseMaxError(const std::string& s, bool& relative);
+/// "edge" -> true (error-driven edge splits), "bisection" -> false; throws UsageError naming
+/// `what` (the option) otherwise.
+bool ParseEdgeRefinement(const std::string& s, const std::string& what);
 }
 
 #endif

@@ -14,6 +14,7 @@
 #include "MeshQuality.h"
 #include "ReducerVTK.h"
 #include "ReductionBaselines.h"
+#include "ReductionTargets.h"
 #include "TetReducer.h"
 
 #include <vtkImageData.h>
@@ -135,13 +136,9 @@ int Run(const cli::Options& o)
 
   // Ours: one nested run emits every level; each level's time is the build time up to it.
   const std::string refinement = o.Get("red-refinement");
-  if (refinement != "bisection" && refinement != "edge")
-  {
-    throw cli::UsageError("--red-refinement is bisection or edge, got '" + refinement + "'");
-  }
   art::ReducerOptions opt;
-  opt.Refine = refinement == "edge" ? art::ReducerOptions::Refinement::EdgeSplit
-                                    : art::ReducerOptions::Refinement::Bisection;
+  opt.Refine = cli::ParseEdgeRefinement(refinement, "--red-refinement") ? art::ReducerOptions::Refinement::EdgeSplit
+                                                                          : art::ReducerOptions::Refinement::Bisection;
   opt.Levels = levels;
   std::vector<Row> rows(levels.size());
   std::vector<std::vector<double>> times(levels.size());

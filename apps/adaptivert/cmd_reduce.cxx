@@ -83,13 +83,8 @@ int Run(const cli::Options& o)
     throw cli::UsageError("--metric is rms or max, got '" + metric + "'");
   }
   opt.ErrorMetric = metric == "max" ? art::ReducerOptions::Metric::Max : art::ReducerOptions::Metric::RMS;
-  const std::string refinement = o.Get("refinement");
-  if (refinement != "bisection" && refinement != "edge")
-  {
-    throw cli::UsageError("--refinement is bisection or edge, got '" + refinement + "'");
-  }
-  opt.Refine = refinement == "edge" ? art::ReducerOptions::Refinement::EdgeSplit
-                                    : art::ReducerOptions::Refinement::Bisection;
+  opt.Refine = cli::ParseEdgeRefinement(o.Get("refinement"), "--refinement") ? art::ReducerOptions::Refinement::EdgeSplit
+                                                             : art::ReducerOptions::Refinement::Bisection;
   opt.RefineFraction = o.GetDouble("refine-fraction");
   opt.SolverTolerance = o.GetDouble("tolerance");
   if (!(opt.RefineFraction > 0.0 && opt.RefineFraction <= 4.0) || !(opt.SolverTolerance > 0 && opt.SolverTolerance < 1))

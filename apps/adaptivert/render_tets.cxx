@@ -183,13 +183,8 @@ int Run(const cli::Options& o, const std::string& input)
       {
 #ifdef ART_HAVE_Reduction
         art::ReducerOptions ro;
-        const std::string refinement = o.Get("refinement");
-        if (refinement != "bisection" && refinement != "edge")
-        {
-          throw cli::UsageError("--refinement is bisection or edge, got '" + refinement + "'");
-        }
-        ro.Refine = refinement == "edge" ? art::ReducerOptions::Refinement::EdgeSplit
-                                         : art::ReducerOptions::Refinement::Bisection;
+        ro.Refine = cli::ParseEdgeRefinement(o.Get("refinement"), "--refinement") ? art::ReducerOptions::Refinement::EdgeSplit
+                                                                  : art::ReducerOptions::Refinement::Bisection;
         const long long voxels = volume->GetNumberOfPoints();
         if (o.Has("tets"))
         {
