@@ -158,17 +158,8 @@ int Run(const cli::Options& o, const std::string& input)
   const auto t0 = std::chrono::steady_clock::now();
   if (art::KindOf(input) == art::DataKind::Volume)
   {
-    volume = art::LoadVolume(input, o.Get("array"));
-    if (!volume->GetPointData()->GetScalars())
-    {
-      throw art::Error("volume has no scalars", input);
-    }
-    if (const int nc = volume->GetPointData()->GetScalars()->GetNumberOfComponents(); nc != 1)
-    {
-      throw art::Error("the scalars have " + std::to_string(nc) +
-          " components; rendering needs one (pick a one-component array with --array, or extract a component)",
-        input);
-    }
+    volume = art::LoadVolume(input, o.Get("array")); // it has scalars
+    art::RequireOneComponent(volume, input);
     volume->GetPointData()->GetScalars()->GetRange(range);
     if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
     {

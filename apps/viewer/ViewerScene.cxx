@@ -65,16 +65,8 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const std:
   if (kind == art::DataKind::Volume)
   {
     s.Image = vtkImageData::SafeDownCast(data);
-    vtkDataArray* sc = s.Image->GetPointData()->GetScalars();
-    if (!sc)
-    {
-      throw art::Error("volume has no scalars", file);
-    }
-    if (sc->GetNumberOfComponents() != 1)
-    {
-      throw art::Error("volume has " + std::to_string(sc->GetNumberOfComponents()) + " components, expected 1", file);
-    }
-    sc->GetRange(s.Range);
+    art::RequireOneComponent(s.Image, file);
+    s.Image->GetPointData()->GetScalars()->GetRange(s.Range);
     double b[6];
     s.Image->GetBounds(b);
     s.Bounds = art::Box3::FromBounds(b);

@@ -439,6 +439,17 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   return img;
 }
 
+void RequireOneComponent(vtkImageData* volume, const std::string& path)
+{
+  vtkDataArray* s = volume->GetPointData()->GetScalars();
+  if (const int nc = s ? s->GetNumberOfComponents() : 0; nc != 1)
+  {
+    throw Error("the scalars have " + std::to_string(nc) +
+        " components; rendering needs one (pick a one-component array with --array, or extract a component)",
+      path);
+  }
+}
+
 vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
 {
   if (KindOf(path) != DataKind::Surface)

@@ -32,6 +32,8 @@ ADAPTIVERTIO_EXPORT const char* KindName(DataKind k);
 /// The volume's point array `array` becomes its scalars (default: the active scalars, else the
 /// first one-component array); a missing array is an art::Error that lists the ones there are.
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::string& array = {});
+/// For renderers: an art::Error naming `path` unless the volume's scalars have one component.
+ADAPTIVERTIO_EXPORT void RequireOneComponent(vtkImageData* volume, const std::string& path);
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path);
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path);
 /// Loads whatever the extension says; the result is one of the three types above.
