@@ -5,7 +5,7 @@
 #include "MetaImageCheck.h"
 #include "NrrdCheck.h"
 #include "NrrdDirection.h"
-#include "ObjCheck.h"
+#include "ObjReader.h"
 #include "PlyCheck.h"
 #include "StlCheck.h"
 
@@ -28,7 +28,6 @@
 #include <vtkNIFTIImageReader.h>
 #include <vtkNew.h>
 #include <vtkNrrdReader.h>
-#include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -458,15 +457,15 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   }
   const std::string e = LowerExtension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
-  if (e == ".ply")
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  if (e == ".obj")
+  {
+    pd = ReadObj(path); // vtkOBJReader drops faces (see ObjReader.h)
+  }
+  else if (e == ".ply")
   {
     CheckPly(path);
     reader = FileReader<vtkPLYReader>(path);
-  }
-  else if (e == ".obj")
-  {
-    CheckObj(path);
-    reader = FileReader<vtkOBJReader>(path);
   }
   else if (e == ".stl")
   {
@@ -481,9 +480,11 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   {
     reader = FileReader<vtkXMLPolyDataReader>(path);
   }
-  RunReader(reader, path);
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  pd->ShallowCopy(reader->GetOutputDataObject(0));
+  if (reader)
+  {
+    RunReader(reader, path);
+    pd->ShallowCopy(reader->GetOutputDataObject(0));
+  }
   if (pd->GetNumberOfPoints() == 0 || pd->GetNumberOfPolys() + pd->GetNumberOfStrips() == 0)
   {
     throw Error("holds no polygons (empty or unreadable surface)", path);

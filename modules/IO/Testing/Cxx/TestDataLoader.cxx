@@ -1,6 +1,8 @@
 #include "DataLoader.h"
 #include "Error.h"
 
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkSTLWriter.h>
@@ -13,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -91,6 +94,86 @@ TEST(DataLoader, ObjFaceIndicesAreChecked)
     f << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n";
   }
   ExpectError(good, "line 4: a face refers to vertex -4 of 3 defined");
+}
+
+// Architectural and CAD exports mix face forms in one file. vtkOBJReader (VTK 9.1) kept 1 of these
+// 5 faces (it drops faces without the normals or texture coordinates another face has) and failed
+// on the CRLF copy; every face is kept now, in both.
+TEST(DataLoader, ObjKeepsEveryFace)
+{
+  const std::string text = "# exported by C:\\cad\\ \\\n"
+                           "mtllib walls.mtl\no wall\n"
+                           "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\n"
+                           "vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\nvn 0 -1 0\n"
+                           "g front\nusemtl brick\ns 1\n"
+                           "f 1//1 2//1 3//1\n"
+                           "f 1 3 4\n"
+                           "s off\n"
+                           "f 1/1 2/2 5/3\n"
+                           "f -6/-3/-1 -5/-2/-1 -1/-1/-1 \\\n  -2\n"
+                           "f 3 4 5 \\\n6 2 # a pentagon\n";
+  for (const bool crlf : { false, true })
+  {
+    std::string body = text;
+    if (crlf)
+    {
+      for (std::size_t p = body.find('\n'); p != std::string::npos; p = body.find('\n', p + 2))
+      {
+        body.insert(p, "\r");
+      }
+    }
+    const std::string path = std::string(ART_TEST_OUTPUT) + (crlf ? "/mixed-faces-crlf.obj" : "/mixed-faces.obj");
+    std::ofstream(path, std::ios::binary) << body;
+    auto pd = art::LoadSurface(path);
+    ASSERT_EQ(pd->GetNumberOfPolys(), 5) << path;
+    EXPECT_EQ(pd->GetNumberOfPoints(), 6) << path; // no attribute on every face: vertices as in the file
+    EXPECT_EQ(pd->GetPointData()->GetNormals(), nullptr);
+    const std::vector<std::vector<vtkIdType>> expected = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 1, 4 }, { 0, 1, 5, 4 },
+      { 2, 3, 4, 5, 1 } };
+    vtkIdType triangles = 0;
+    for (vtkIdType c = 0; c < 5; ++c)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      pd->GetPolys()->GetCellAtId(c, n, ids);
+      EXPECT_EQ(std::vector<vtkIdType>(ids, ids + n), expected[c]) << "face " << c << " of " << path;
+      triangles += n - 2;
+    }
+    EXPECT_EQ(triangles, 8);
+    double b[6];
+    pd->GetBounds(b);
+    EXPECT_EQ(b[1], 1);
+    EXPECT_EQ(b[5], 1);
+  }
+}
+
+// Faces with normals on every corner keep them; a vertex whose faces give it different normals is
+// split there (a crease), one whose faces agree is shared.
+TEST(DataLoader, ObjNormalsSplitOnlyAtCreases)
+{
+  const std::string path = std::string(ART_TEST_OUTPUT) + "/crease.obj";
+  std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 1 0 0\n"
+                         "f 1//1 2//2 3//3\nf 2//2 4//4 3//3\n";
+  auto pd = art::LoadSurface(path);
+  EXPECT_EQ(pd->GetNumberOfPolys(), 2);
+  EXPECT_EQ(pd->GetNumberOfPoints(), 4); // normal index = vertex index: nothing to split
+  ASSERT_NE(pd->GetPointData()->GetNormals(), nullptr);
+  EXPECT_EQ(pd->GetPointData()->GetNormals()->GetTuple3(3)[0], 1);
+
+  std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\nvn 0 0 1\nvn 1 0 0\n"
+                         "f 1//1 2//1 3//1\nf 2//2 4//2 3//1\n";
+  pd = art::LoadSurface(path);
+  EXPECT_EQ(pd->GetNumberOfPolys(), 2);
+  EXPECT_EQ(pd->GetNumberOfPoints(), 5); // vertex 2 has two normals, vertex 3 one
+  vtkIdType n;
+  const vtkIdType* ids;
+  pd->GetPolys()->GetCellAtId(1, n, ids);
+  EXPECT_EQ(std::vector<vtkIdType>(ids, ids + n), (std::vector<vtkIdType>{ 3, 4, 2 }));
+
+  std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n";
+  ExpectError(path, "line 4: a face needs at least 3 corners, it has 2");
+  std::ofstream(path) << "v 0 0 0\nv 1 0\n";
+  ExpectError(path, "line 2: expected 3 numbers, found 2");
 }
 
 TEST(DataLoader, WrongKindForTheCall)

@@ -1,0 +1,338 @@
+#include "ObjReader.h"
+#include "Error.h"
+
+#include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <array>
+#include <cerrno>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+namespace art
+{
+namespace
+{
+enum Field
+{
+  V,
+  T,
+  N
+};
+const char* const FieldName[3] = { "vertex", "texture coordinate", "normal" };
+
+// One corner of a face, line or point: 0-based indices, -1 where the file gives none.
+using Corner = std::array<std::int32_t, 3>;
+
+struct CornerHash
+{
+  std::size_t operator()(const Corner& c) const
+  {
+    std::uint64_t h = static_cast<std::uint32_t>(c[0]);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(c[1]);
+    h = h * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint32_t>(c[2]);
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+
+struct Cell
+{
+  char kind; // 'f', 'l' or 'p'
+  std::size_t first, count; // into Obj::Corners
+};
+
+struct Obj
+{
+  std::vector<double> Coords[3]; // v (3 per vertex), vt (2 per coordinate), vn (3 per normal)
+  std::size_t Count[3] = { 0, 0, 0 };
+  std::vector<Corner> Corners;
+  std::vector<Cell> Cells;
+};
+
+bool IsSpace(char c)
+{
+  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+const char* SkipSpace(const char* p)
+{
+  while (IsSpace(*p))
+  {
+    ++p;
+  }
+  return p;
+}
+
+// Reads up to `want` numbers after the keyword; `need` of them must be there.
+void ReadNumbers(const char* p, int need, int want, std::vector<double>& out, long long line, const std::string& path)
+{
+  int got = 0;
+  for (; got < want; ++got)
+  {
+    p = SkipSpace(p);
+    char* end = nullptr;
+    const double x = std::strtod(p, &end);
+    if (end == p)
+    {
+      break;
+    }
+    out.push_back(x);
+    p = end;
+  }
+  if (got < need)
+  {
+    throw Error("line " + std::to_string(line) + ": expected " + std::to_string(need) + " numbers, found " +
+        std::to_string(got),
+      path);
+  }
+  for (; got < want; ++got)
+  {
+    out.push_back(0.0); // an optional v of "vt u"
+  }
+}
+
+// "v", "v/vt", "v//vn" or "v/vt/vn": 1-based or negative (counted back from the last defined).
+Corner ReadCorner(const std::string& item, const Obj& obj, long long line, const char* element, const std::string& path)
+{
+  Corner c = { -1, -1, -1 };
+  std::size_t a = 0;
+  for (int field = V; field <= N && a <= item.size(); ++field)
+  {
+    const std::size_t b = std::min(item.find('/', a), item.size());
+    if (b > a)
+    {
+      const std::string text = item.substr(a, b - a);
+      char* end = nullptr;
+      errno = 0;
+      const long long i = std::strtoll(text.c_str(), &end, 10);
+      const long long n = static_cast<long long>(obj.Count[field]);
+      const long long at = i > 0 ? i - 1 : n + i;
+      if (*end != '\0' || errno || i == 0 || at < 0 || at >= n)
+      {
+        throw Error("line " + std::to_string(line) + ": " + element + " refers to " + FieldName[field] + " " + text +
+            " of " + std::to_string(n) + " defined",
+          path);
+      }
+      c[field] = static_cast<std::int32_t>(at);
+    }
+    else if (field == V)
+    {
+      throw Error("line " + std::to_string(line) + ": " + element + " corner '" + item + "' has no vertex", path);
+    }
+    a = b + 1;
+  }
+  return c;
+}
+
+void ReadCell(char kind, const char* p, Obj& obj, long long line, const std::string& path)
+{
+  const char* element = kind == 'f' ? "a face" : kind == 'l' ? "a line" : "a point";
+  Cell cell{ kind, obj.Corners.size(), 0 };
+  for (p = SkipSpace(p); *p; p = SkipSpace(p))
+  {
+    const char* e = p;
+    while (*e && !IsSpace(*e))
+    {
+      ++e;
+    }
+    obj.Corners.push_back(ReadCorner(std::string(p, e), obj, line, element, path));
+    p = e;
+  }
+  cell.count = obj.Corners.size() - cell.first;
+  const std::size_t least = kind == 'f' ? 3 : kind == 'l' ? 2 : 1;
+  if (cell.count < least)
+  {
+    throw Error("line " + std::to_string(line) + ": " + element + " needs at least " + std::to_string(least) +
+        " corners, it has " + std::to_string(cell.count),
+      path);
+  }
+  obj.Cells.push_back(cell);
+}
+
+Obj Parse(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw Error("cannot open file", path);
+  }
+  Obj obj;
+  std::string line, more;
+  long long number = 0;
+  // A physical line without its comment and trailing blanks (a "\" inside a comment continues nothing).
+  auto next = [&in, &number](std::string& s) {
+    if (!std::getline(in, s))
+    {
+      return false;
+    }
+    ++number;
+    if (const std::size_t hash = s.find('#'); hash != std::string::npos)
+    {
+      s.resize(hash);
+    }
+    while (!s.empty() && IsSpace(s.back()))
+    {
+      s.pop_back();
+    }
+    return true;
+  };
+  while (next(line))
+  {
+    const long long start = number;
+    // A "\" at the end of a line continues the statement on the next one.
+    while (!line.empty() && line.back() == '\\' && next(more))
+    {
+      line.back() = ' ';
+      line += more;
+    }
+    const char* p = SkipSpace(line.c_str());
+    const char* k = p;
+    while (*p && !IsSpace(*p))
+    {
+      ++p;
+    }
+    const std::string key(k, p);
+    if (key == "v")
+    {
+      ReadNumbers(p, 3, 3, obj.Coords[V], start, path);
+      ++obj.Count[V];
+    }
+    else if (key == "vt")
+    {
+      ReadNumbers(p, 1, 2, obj.Coords[T], start, path);
+      ++obj.Count[T];
+    }
+    else if (key == "vn")
+    {
+      ReadNumbers(p, 3, 3, obj.Coords[N], start, path);
+      ++obj.Count[N];
+    }
+    else if (key == "f" || key == "l" || key == "p")
+    {
+      ReadCell(key[0], p, obj, start, path);
+    }
+    if (obj.Count[V] > std::numeric_limits<std::int32_t>::max() || obj.Corners.size() > (std::size_t(1) << 40))
+    {
+      throw Error("more than 2^31 vertices", path);
+    }
+  }
+  if (in.bad())
+  {
+    throw Error("read error", path);
+  }
+  return obj;
+}
+
+vtkSmartPointer<vtkDataArray> Attribute(int field, const char* name)
+{
+  vtkSmartPointer<vtkDataArray> a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(field == T ? 2 : 3);
+  return a;
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> ReadObj(const std::string& path)
+{
+  const Obj obj = Parse(path);
+  // An attribute is kept only when every face corner has one: a normal for some corners only
+  // would leave the others' points without one.
+  bool keep[3] = { true, obj.Count[T] > 0, obj.Count[N] > 0 };
+  bool sameAsVertex = true; // every kept index equals the vertex index: no point need be split
+  for (const Cell& cell : obj.Cells)
+  {
+    for (std::size_t i = cell.first; cell.kind == 'f' && i < cell.first + cell.count; ++i)
+    {
+      keep[T] = keep[T] && obj.Corners[i][T] >= 0;
+      keep[N] = keep[N] && obj.Corners[i][N] >= 0;
+    }
+  }
+  for (const Corner& c : obj.Corners)
+  {
+    sameAsVertex = sameAsVertex && (!keep[T] || c[T] < 0 || c[T] == c[V]) && (!keep[N] || c[N] < 0 || c[N] == c[V]);
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble(); // survey and CAD coordinates need more than a float's 7 digits
+  vtkSmartPointer<vtkDataArray> attr[3] = { nullptr, keep[T] ? Attribute(T, "TCoords") : nullptr,
+    keep[N] ? Attribute(N, "Normals") : nullptr };
+  std::vector<vtkIdType> ids(obj.Corners.size());
+  auto addPoint = [&](const Corner& c) {
+    const vtkIdType id = points->InsertNextPoint(&obj.Coords[V][3 * std::size_t(c[V])]);
+    for (int f : { T, N })
+    {
+      if (attr[f])
+      {
+        const int nc = f == T ? 2 : 3;
+        double value[3] = { 0, 0, 0 };
+        for (int k = 0; c[f] >= 0 && k < nc; ++k)
+        {
+          value[k] = obj.Coords[f][nc * std::size_t(c[f]) + k];
+        }
+        attr[f]->InsertNextTuple(value);
+      }
+    }
+    return id;
+  };
+  if (sameAsVertex)
+  {
+    // Every vertex is a point, in file order, with the attribute of the same index (if any).
+    for (std::size_t v = 0; v < obj.Count[V]; ++v)
+    {
+      const auto i = static_cast<std::int32_t>(v);
+      addPoint({ i, keep[T] && v < obj.Count[T] ? i : -1, keep[N] && v < obj.Count[N] ? i : -1 });
+    }
+    for (std::size_t i = 0; i < obj.Corners.size(); ++i)
+    {
+      ids[i] = obj.Corners[i][V];
+    }
+  }
+  else
+  {
+    // One point per distinct (vertex, kept attributes) triple, in order of first use.
+    std::unordered_map<Corner, vtkIdType, CornerHash> index;
+    index.reserve(obj.Count[V]);
+    for (std::size_t i = 0; i < obj.Corners.size(); ++i)
+    {
+      Corner c = obj.Corners[i];
+      c[T] = keep[T] ? c[T] : -1;
+      c[N] = keep[N] ? c[N] : -1;
+      auto [it, added] = index.try_emplace(c, 0);
+      if (added)
+      {
+        it->second = addPoint(c);
+      }
+      ids[i] = it->second;
+    }
+  }
+
+  vtkNew<vtkCellArray> cells[3]; // verts, lines, polys
+  for (const Cell& cell : obj.Cells)
+  {
+    vtkCellArray* ca = cells[cell.kind == 'p' ? 0 : cell.kind == 'l' ? 1 : 2];
+    ca->InsertNextCell(static_cast<vtkIdType>(cell.count), &ids[cell.first]);
+  }
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(points);
+  pd->SetVerts(cells[0]);
+  pd->SetLines(cells[1]);
+  pd->SetPolys(cells[2]);
+  if (attr[T])
+  {
+    pd->GetPointData()->SetTCoords(attr[T]);
+  }
+  if (attr[N])
+  {
+    pd->GetPointData()->SetNormals(attr[N]);
+  }
+  return pd;
+}
+} // namespace art
