@@ -1,6 +1,7 @@
 #include "TetRayCaster.h"
 
 #include "EntryFinder.h"
+#include "Error.h"
 #include "ExactIntegrator.h"
 #include "MeanSpacing.h"
 #include "ParallelTiles.h"
@@ -44,11 +45,22 @@ struct TetRayCaster::Impl
     double fr[8];
     int fi[8];
     // Inlined into the walk by force: GCC otherwise calls it once per tet.
-    auto visit = [&](int t, const FaceCrossing& in, const FaceCrossing& ex) ART_ALWAYS_INLINE {
+    auto visit = [&](int t, const FaceCrossing& in, const FaceCrossing& whole) ART_ALWAYS_INLINE {
+      // The ray ends inside this tet (at opaque geometry in front of the exit): the segment is
+      // cut there, the scalar interpolated linearly along it, and the walk stops.
+      const bool ends = whole.t > r.tmax;
+      FaceCrossing ex = whole;
+      if (ends)
+      {
+        const double f = whole.t > in.t ? std::max(0.0, (r.tmax - in.t) / (whole.t - in.t)) : 0.0;
+        ex.t = std::max(in.t, r.tmax);
+        ex.s = in.s + f * (whole.s - in.s);
+        stop = true;
+      }
       if (mip)
       {
         res.maxScalar = std::max(res.maxScalar, std::max(in.s, ex.s));
-        return true;
+        return !ends;
       }
       const double len = (ex.t - in.t) * dirLen;
       double fa = 0.0, sa = in.s;
@@ -100,7 +112,7 @@ struct TetRayCaster::Impl
         }
       }
       rule.Integrate(sa, ex.s, len * (1.0 - fa), acc);
-      if (acc.Alpha() >= S.earlyTermination)
+      if (ends || acc.Alpha() >= S.earlyTermination)
       {
         stop = true;
         return false;
@@ -141,7 +153,7 @@ struct TetRayCaster::Impl
     }
     for (const Entry& e : entries)
     {
-      if (stop)
+      if (stop || e.x.t >= r.tmax)
       {
         break;
       }
@@ -205,7 +217,8 @@ struct TetRayCaster::Impl
   }
 
   template <class Rule>
-  static RenderStats RenderWith(const TetRayCaster& rc, const Rule& rule, const Camera& cam, Image& img, Progress* p)
+  static RenderStats RenderWith(const TetRayCaster& rc, const Rule& rule, const Camera& cam, Image& img, Progress* p,
+    const std::vector<double>* ends)
   {
     const auto start = std::chrono::steady_clock::now();
     img = Image(cam.Width(), cam.Height());
@@ -238,6 +251,10 @@ struct TetRayCaster::Impl
             const int x = back ? tile.x1 - 1 - (i - tile.x0) : i;
             ++c.rays;
             Ray r = cam.Generate(x, y);
+            if (ends)
+            {
+              r.tmax = (*ends)[static_cast<std::size_t>(y) * cam.Width() + x];
+            }
             double t0, t1;
             if (!rc.M.Bounds().Clip(r, t0, t1))
             {
@@ -311,13 +328,17 @@ TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
 
 TetRayCaster::~TetRayCaster() = default;
 
-RenderStats TetRayCaster::Render(const Camera& cam, Image& img, Progress* progress) const
+RenderStats TetRayCaster::Render(const Camera& cam, Image& img, Progress* progress, const std::vector<double>* ends) const
 {
+  if (ends && ends->size() != static_cast<std::size_t>(cam.Width()) * cam.Height())
+  {
+    throw Error("TetRayCaster::Render: the ray ends do not match the camera's image size");
+  }
   if (S.rule == RenderSettings::Rule::Trapezoid)
   {
-    return Impl::RenderWith(*this, TrapezoidRule(S.tf), cam, img, progress);
+    return Impl::RenderWith(*this, TrapezoidRule(S.tf), cam, img, progress, ends);
   }
-  return Impl::RenderWith(*this, ExactIntegrator(S.tf), cam, img, progress);
+  return Impl::RenderWith(*this, ExactIntegrator(S.tf), cam, img, progress, ends);
 }
 
 RayResult TetRayCaster::Cast(const Ray& r) const

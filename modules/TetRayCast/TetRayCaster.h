@@ -82,8 +82,13 @@ public:
   ~TetRayCaster();
 
   /// Renders cam's view into img (resized to the camera): premultiplied RGBA, not composited.
-  RenderStats Render(const Camera& cam, Image& img, Progress* progress = nullptr) const;
+  /// `ends` (width x height, row 0 at the top) gives each pixel's ray a far end, in the t of
+  /// cam.Generate's ray: opaque geometry in the scene, which the volume behind it must not show
+  /// through. Infinity for none.
+  RenderStats Render(const Camera& cam, Image& img, Progress* progress = nullptr,
+    const std::vector<double>* ends = nullptr) const;
   /// One ray on its own (tests every boundary face for the entry: for checks, not for speed).
+  /// The ray's tmax ends it, as `ends` does in Render.
   RayResult Cast(const Ray& r) const;
 
   const RenderSettings& Settings() const { return S; }

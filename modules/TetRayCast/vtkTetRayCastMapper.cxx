@@ -16,6 +16,7 @@
 #include <vtkPointData.h>
 #include <vtkRayCastImageDisplayHelper.h>
 #include <vtkCellData.h>
+#include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
@@ -24,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -32,6 +34,55 @@ VTK_MODULE_INIT(vtkRenderingOpenGL2);
 VTK_MODULE_INIT(vtkRenderingVolumeOpenGL2);
 
 vtkStandardNewMacro(vtkTetRayCastMapper);
+
+namespace
+{
+// Where each of cam's rays meets the opaque geometry already drawn in ren's viewport (vw x vh
+// window pixels): the depth buffer at the ray's pixel, taken back through the camera's projection
+// into world and then data coordinates (toData), as a t along cam.Generate(x, y). Infinity where
+// nothing was drawn.
+std::vector<double> RayEndsFromDepth(
+  vtkRenderer* ren, int vw, int vh, const art::Camera& cam, vtkMatrix4x4* toData)
+{
+  std::vector<float> z(static_cast<std::size_t>(vw) * vh, 1.0f);
+  const int* org = ren->GetOrigin();
+  ren->GetRenderWindow()->GetZbufferData(org[0], org[1], org[0] + vw - 1, org[1] + vh - 1, z.data());
+  double aspect[2];
+  ren->ComputeAspect();
+  ren->GetAspect(aspect);
+  vtkNew<vtkMatrix4x4> fromNdc;
+  vtkMatrix4x4::Invert(
+    ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect[0] / aspect[1], -1, 1), fromNdc);
+  const int w = cam.Width(), h = cam.Height();
+  std::vector<double> ends(static_cast<std::size_t>(w) * h, std::numeric_limits<double>::infinity());
+  for (int y = 0; y < h; ++y)
+  {
+    // Ray rows count from the top, window rows from the bottom.
+    const int vy = vh - 1 - std::min(vh - 1, static_cast<int>((y + 0.5) * vh / h));
+    for (int x = 0; x < w; ++x)
+    {
+      const int vx = std::min(vw - 1, static_cast<int>((x + 0.5) * vw / w));
+      const double d = z[static_cast<std::size_t>(vy) * vw + vx];
+      if (!(d < 1.0))
+      {
+        continue;
+      }
+      const double ndc[4] = { 2.0 * (vx + 0.5) / vw - 1.0, 2.0 * (vy + 0.5) / vh - 1.0, 2.0 * d - 1.0, 1.0 };
+      double world[4], p[4];
+      fromNdc->MultiplyPoint(ndc, world);
+      toData->MultiplyPoint(world, p);
+      if (p[3] == 0.0)
+      {
+        continue;
+      }
+      const art::Ray r = cam.Generate(x, y);
+      const art::Vec3 hit(p[0] / p[3], p[1] / p[3], p[2] / p[3]);
+      ends[static_cast<std::size_t>(y) * w + x] = art::Dot(hit - r.org, r.dir) / art::Dot(r.dir, r.dir);
+    }
+  }
+  return ends;
+}
+} // namespace
 
 struct vtkTetRayCastMapper::Internals
 {
@@ -158,12 +209,12 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // volume's matrix (exact for rotations, translations and uniform scales; segment lengths, and
   // so the opacity unit distance, are measured in data units).
   vtkMatrix4x4* toWorld = vol->GetMatrix();
+  vtkNew<vtkMatrix4x4> toData;
+  vtkMatrix4x4::Invert(toWorld, toData);
   vtkNew<vtkCamera> local;
   local->DeepCopy(ren->GetActiveCamera());
   if (!toWorld->IsIdentity())
   {
-    vtkNew<vtkMatrix4x4> toData;
-    vtkMatrix4x4::Invert(toWorld, toData);
     double pos[4], fp[4], up[3], q[4];
     local->GetPosition(pos);
     local->GetFocalPoint(fp);
@@ -192,8 +243,14 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
   }
   const art::Camera cam = art::Camera::FromVTK(local, w, h);
+  std::vector<double> ends;
+  if (this->IntermixIntersectingGeometry && ren->GetNumberOfPropsRendered() > 0 && ren->GetRenderWindow())
+  {
+    ends = RayEndsFromDepth(ren, vw, vh, cam, toData);
+  }
   art::Image img;
-  const art::RenderStats st = art::TetRayCaster(*this->Impl->Mesh, s).Render(cam, img);
+  const art::RenderStats st =
+    art::TetRayCaster(*this->Impl->Mesh, s).Render(cam, img, nullptr, ends.empty() ? nullptr : &ends);
   this->LastRenderTime = st.seconds;
   this->LastTetsCrossed = static_cast<double>(st.counters.tetsCrossed);
 
@@ -246,6 +303,7 @@ void vtkTetRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
   os << indent << "EarlyRayTermination: " << this->EarlyRayTermination << "\n";
   os << indent << "TrapezoidRule: " << this->TrapezoidRule << "\n";
+  os << indent << "IntermixIntersectingGeometry: " << this->IntermixIntersectingGeometry << "\n";
   os << indent << "IsoSurfaces: " << this->Impl->Isos.size() << "\n";
   os << indent << "LastRenderTime: " << this->LastRenderTime << "\n";
 }

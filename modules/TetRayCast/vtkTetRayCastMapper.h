@@ -10,7 +10,8 @@
  * cores at the renderer's size divided by ImageSampleDistance and drawn as a textured quad, like
  * VTK's own ray cast mappers. Non-tetrahedral cells are tetrahedralised first. The volume's
  * matrix (position, orientation, uniform scale) is honoured by casting in the data's coordinates;
- * an anisotropic scale is approximated (with a warning).
+ * an anisotropic scale is approximated (with a warning). Opaque geometry in the scene ends the
+ * rays at its depth (IntermixIntersectingGeometry).
  */
 #ifndef vtkTetRayCastMapper_h
 #define vtkTetRayCastMapper_h
@@ -47,6 +48,17 @@ public:
   vtkBooleanMacro(TrapezoidRule, vtkTypeBool);
   ///@}
 
+  ///@{
+  /**
+   * Opaque geometry rendered before the volume (surfaces, slices, outlines) hides what lies behind
+   * it: each ray ends at the depth buffer's value for its pixel (default on, as in VTK's
+   * vtkUnstructuredGridVolumeRayCastMapper).
+   */
+  vtkSetClampMacro(IntermixIntersectingGeometry, vtkTypeBool, 0, 1);
+  vtkGetMacro(IntermixIntersectingGeometry, vtkTypeBool);
+  vtkBooleanMacro(IntermixIntersectingGeometry, vtkTypeBool);
+  ///@}
+
   /** Adds a shaded iso-surface at `value` with colour (r, g, b) and constant opacity. */
   void AddIsoSurface(double value, double r, double g, double b, double opacity);
   void RemoveAllIsoSurfaces();
@@ -69,6 +81,7 @@ protected:
   float ImageSampleDistance = 1.0f;
   double EarlyRayTermination = 0.99;
   vtkTypeBool TrapezoidRule = 0;
+  vtkTypeBool IntermixIntersectingGeometry = 1;
   double LastRenderTime = 0.0;
   double LastTetsCrossed = 0.0;
   bool WarnedNonUniform = false;

@@ -60,7 +60,8 @@ inline art::TetMesh GridMesh(int nx, int ny, int nz, Vec3 origin, Vec3 h,
   return art::TetMesh(std::move(pts), std::move(val), std::move(tets));
 }
 
-/// Every tet clipped by its four planes; the union of the pieces integrated once, front to back.
+/// Every tet clipped by its four planes (and the ray by its [tmin, tmax]); the union of the
+/// pieces integrated once, front to back.
 inline art::RayAccum BruteForce(const art::TetMesh& m, const art::TransferFunction& tf, const art::Ray& r,
   double ert = 2.0)
 {
@@ -72,7 +73,7 @@ inline art::RayAccum BruteForce(const art::TetMesh& m, const art::TransferFuncti
   std::vector<Piece> pieces;
   for (std::size_t t = 0; t < m.NumberOfTets(); ++t)
   {
-    double t0 = r.tmin, t1 = 1e300;
+    double t0 = r.tmin, t1 = std::min(r.tmax, 1e300);
     bool ok = true;
     for (int f = 0; f < 4 && ok; ++f)
     {

@@ -20,6 +20,8 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 using namespace art;
 
@@ -48,14 +50,16 @@ namespace
 {
 // Every pixel against the closed-form integral of the linear field through the box (from the
 // ray's origin when that lies inside); returns the number of pixels whose ray meets the box.
-int ExpectClosedForm(const TetMesh& m, const Image& img, const Camera& cam, double lo, double hi)
+int ExpectClosedForm(const TetMesh& m, const Image& img, const Camera& cam, double lo, double hi,
+  const std::vector<double>* ends = nullptr)
 {
   const double tau = -std::log(0.7) / 0.5;
   int inside = 0;
   for (int y = 0; y < img.Height(); ++y)
     for (int x = 0; x < img.Width(); ++x)
     {
-      const Ray r = cam.Generate(x, y);
+      Ray r = cam.Generate(x, y);
+      r.tmax = ends ? (*ends)[y * img.Width() + x] : r.tmax;
       double t0, t1, C[3] = { 0, 0, 0 }, a = 0;
       if (m.Bounds().Clip(r, t0, t1) && t1 > t0)
       {
@@ -94,6 +98,46 @@ TEST(TetRayCast, LinearFieldMatchesClosedForm)
   EXPECT_GT(ExpectClosedForm(m, img, cam, lo, hi), 500);
   EXPECT_GT(st.counters.tetsCrossed, st.counters.hits);
   EXPECT_LT(st.counters.entrySearches, st.counters.hits / 4) << "coherent entrance walk";
+}
+
+TEST(TetRayCast, RaysEndAtOpaqueGeometry)
+{
+  // Each ray ends on a sphere through the box (as opaque geometry drawn before the volume would
+  // end it): the closed form up to there. Rays that miss the sphere run to the far side.
+  const TetMesh m = fixtures::GridMesh(4, 3, 5, { 0, 0, 0 }, { 0.25, 1.0 / 3, 0.2 }, Linear, 6);
+  const double lo = -0.2, hi = 0.9;
+  RenderSettings s;
+  s.tf = LinearTF(lo, hi);
+  s.earlyTermination = 2.0;
+  const Camera cam = ViewOf(m.Bounds(), 48, 40, 30, 20);
+  std::vector<double> ends(48 * 40, std::numeric_limits<double>::infinity());
+  const Vec3 c(0.5, 0.4, 0.6);
+  int cut = 0;
+  for (int y = 0; y < 40; ++y)
+    for (int x = 0; x < 48; ++x)
+    {
+      const Ray r = cam.Generate(x, y);
+      const Vec3 oc = r.org - c;
+      const double a = Dot(r.dir, r.dir), b = Dot(oc, r.dir), disc = b * b - a * (Dot(oc, oc) - 0.35 * 0.35);
+      if (disc > 0)
+      {
+        ends[y * 48 + x] = (-b - std::sqrt(disc)) / a;
+        ++cut;
+      }
+    }
+  ASSERT_GT(cut, 100);
+  Image img;
+  TetRayCaster(m, s).Render(cam, img, nullptr, &ends);
+  EXPECT_GT(ExpectClosedForm(m, img, cam, lo, hi, &ends), 500);
+  // Maximum intensity only sees the field up to the end.
+  s.mode = RenderSettings::Mode::MaxIntensity;
+  Ray r;
+  r.org = { -1, 0.5, 0.5 };
+  r.dir = { 1, 0, 0 }; // the field rises along x
+  r.tmax = 1.6;
+  EXPECT_NEAR(TetRayCaster(m, s).Cast(r).maxScalar, Linear({ 0.6, 0.5, 0.5 }), 1e-12);
+  std::vector<double> wrong(10, 1.0);
+  EXPECT_THROW(TetRayCaster(m, s).Render(cam, img, nullptr, &wrong), Error);
 }
 
 TEST(TetRayCast, CameraInsideTheMesh)

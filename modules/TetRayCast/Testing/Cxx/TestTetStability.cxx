@@ -9,6 +9,8 @@
 #include <vtkNew.h>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 using namespace art;
 
@@ -158,6 +160,60 @@ TEST_P(NonConvex, RaysEnterTwice)
       EXPECT_NEAR(img.Pixel(x, y)[3], ref.Alpha(), 1e-6) << x << "," << y;
       EXPECT_NEAR(img.Pixel(x, y)[0], ref.rgb[0], 1e-6) << x << "," << y;
     }
+}
+
+// A ray ends where opaque geometry stands (Ray::tmax, the mapper's depth buffer): in the first
+// piece, in the gap between pieces, inside the second, before the mesh; single rays and images.
+TEST_P(NonConvex, RaysEndAtOpaqueGeometry)
+{
+  RenderSettings settings = Settings();
+  settings.boundaryGrid = GetParam();
+  const TetMesh L = fixtures::GridMesh(4, 4, 2, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Wavy, 6,
+    [](int i, int j, int) { return !(i >= 2 && j >= 2); });
+  const TetRayCaster rc(L, settings);
+  // Enters the x arm at t ~ 2.4, leaves it, crosses the notch, re-enters the y arm.
+  Ray r = MakeRay({ 3.4, -1, 0.3 }, { -1, 1, 0.05 });
+  const RayResult whole = rc.Cast(r);
+  ASSERT_EQ(whole.pieces, 2);
+  int shorter = 0;
+  for (double end : { 0.5, 1.0, 1.6, 1.9, 2.2, 2.5, 2.9, 3.3, 10.0 })
+  {
+    r.tmax = end;
+    Check(L, rc, r, "L ends");
+    shorter += rc.Cast(r).rgba[3] < whole.rgba[3] - 1e-6 ? 1 : 0;
+  }
+  EXPECT_GE(shorter, 6) << "most of these ends cut the ray short";
+  r.tmax = 0.2; // before the mesh
+  EXPECT_EQ(rc.Cast(r).rgba[3], 0.0);
+  // Whole images with a slanted opaque plane x + y + 2z = 2.2 through the mesh.
+  vtkNew<vtkCamera> cam;
+  cam->SetPosition(-1, -3, 2);
+  cam->SetFocalPoint(1, 1, 0.5);
+  const Camera c = Camera::FromVTK(cam, 40, 30);
+  std::vector<double> ends(40 * 30, std::numeric_limits<double>::infinity());
+  const Vec3 n(1, 1, 2);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x)
+    {
+      const Ray q = c.Generate(x, y);
+      const double t = (2.2 - Dot(n, q.org)) / Dot(n, q.dir);
+      ends[y * 40 + x] = t > 0 ? t : ends[y * 40 + x];
+    }
+  Image img, open;
+  rc.Render(c, img, nullptr, &ends);
+  rc.Render(c, open);
+  double changed = 0;
+  for (int y = 0; y < 30; y += 2)
+    for (int x = 0; x < 40; x += 2)
+    {
+      Ray q = c.Generate(x, y);
+      q.tmax = ends[y * 40 + x];
+      const RayAccum ref = fixtures::BruteForce(L, rc.Settings().tf, q);
+      EXPECT_NEAR(img.Pixel(x, y)[3], ref.Alpha(), 1e-6) << x << "," << y;
+      EXPECT_NEAR(img.Pixel(x, y)[0], ref.rgb[0], 1e-6) << x << "," << y;
+      changed = std::max(changed, double(open.Pixel(x, y)[3] - img.Pixel(x, y)[3]));
+    }
+  EXPECT_GT(changed, 0.1) << "the plane must hide part of the mesh";
 }
 
 // Every tet with its own four points and a field that jumps between tets: no face is shared, so
