@@ -1,8 +1,10 @@
 // adaptivert info FILE...: what a volume, surface or mesh holds.
 #include "Command.h"
+#include "AtomicFile.h"
 #include "DataLoader.h"
 #include "Error.h"
 #include "Json.h"
+#include "VolumePlacement.h"
 
 #include <vtkCellData.h>
 #include <vtkCellTypes.h>
@@ -16,6 +18,7 @@
 
 #include <cstdarg>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 
 namespace
@@ -76,6 +79,43 @@ std::string ArrayList(vtkFieldData* fd)
   return s.empty() ? "none" : s;
 }
 
+// Medical formats place voxels in LPS patient coordinates: name where the axes point, and which
+// NIfTI transform placed them (a flipped or turned file is otherwise easy to miss).
+void Orientation(const std::string& path, vtkImageData* img, std::string& text, cli::Json& j)
+{
+  const std::string e = art::LowerExtension(path);
+  const bool nifti = e == ".nii" || e == ".nii.gz";
+  if (!(nifti || e == ".mha" || e == ".mhd" || e == ".nrrd" || e == ".nhdr" || std::filesystem::is_directory(path)))
+  {
+    return;
+  }
+  std::string codes = art::AxisCodes(img);
+  art::NiftiPlacementInfo placement;
+  if (nifti)
+  {
+    // VTK may read a NIfTI file's slices last first; other tools (fslhd, nibabel) name the
+    // file's own axes.
+    placement = art::NiftiPlacement(path);
+    const std::string from = "LRPAIS", to = "RLAPSI";
+    codes[2] = placement.SlicesReversed ? to[from.find(codes[2])] : codes[2];
+  }
+  std::string words;
+  for (char c : codes)
+  {
+    const std::string letters = "LRPAIS";
+    const char* names[6] = { "left", "right", "posterior", "anterior", "inferior", "superior" };
+    words += (words.empty() ? "" : ", ") + std::string(names[letters.find(c)]);
+  }
+  Out(text, "  orientation  %s (%si, j, k toward %s; world x, y, z = left, posterior, superior)\n", codes.c_str(),
+    nifti ? "the file's " : "", words.c_str());
+  j.Set("orientation", codes);
+  if (nifti)
+  {
+    Out(text, "  placed by    NIfTI %s%s\n", placement.How.c_str(), placement.SlicesReversed ? "; slices read last first" : "");
+    j.Set("nifti_placement", placement.How).Set("slices_reversed", placement.SlicesReversed);
+  }
+}
+
 cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind kind, std::string& text)
 {
   cli::Json j;
@@ -102,11 +142,13 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
     if (!img->GetDirectionMatrix()->IsIdentity())
     {
       // The axes turned or mirrored: otherwise only the bounds would show it.
-      Out(text, "  direction    [%g %g %g; %g %g %g; %g %g %g]\n", dm[0], dm[1], dm[2], dm[3], dm[4], dm[5], dm[6],
-        dm[7], dm[8]);
+      // + 0.0 prints -0 as 0.
+      Out(text, "  direction    [%g %g %g; %g %g %g; %g %g %g]\n", dm[0] + 0.0, dm[1] + 0.0, dm[2] + 0.0, dm[3] + 0.0,
+        dm[4] + 0.0, dm[5] + 0.0, dm[6] + 0.0, dm[7] + 0.0, dm[8] + 0.0);
       j.Set("direction", std::vector<double>(dm, dm + 9));
     }
     Out(text, "  bounds       %s\n", Bounds(img).c_str());
+    Orientation(path, img, text, j);
     Out(text, "  scalars      %s, %d component%s, range %g .. %g\n", s->GetDataTypeAsString(),
       s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "", r[0], r[1]);
     if (img->GetPointData()->GetNumberOfArrays() > 1)

@@ -8,6 +8,7 @@
 #include "ObjReader.h"
 #include "PlyCheck.h"
 #include "StlCheck.h"
+#include "VolumePlacement.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkAppendFilter.h>
@@ -426,6 +427,7 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(reader))
   {
     ApplyRescale(img, nifti->GetRescaleSlope(), nifti->GetRescaleIntercept());
+    PlaceNifti(img, nifti, path);
   }
   int dims[3];
   img->GetDimensions(dims);

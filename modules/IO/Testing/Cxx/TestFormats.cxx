@@ -30,6 +30,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -150,6 +153,147 @@ TEST(Formats, NiftiRescaleSlopeAndIntercept)
   {
     ASSERT_EQ(c->GetTuple1(i), a->GetTuple1(i)) << "voxel " << i;
   }
+}
+
+// A 4 x 3 x 2 int16 NIfTI-1 file written byte by byte, so its qform and sform are exactly what a
+// test says; voxel (i, j, k) of the file holds i + 10 j + 100 k.
+struct NiftiHeader
+{
+  float pixdim[4] = { 1, 2, 3, 4 }; // pixdim[0] is qfac
+  short qformCode = 0, sformCode = 0;
+  float quatern[3] = { 0, 0, 0 }, qoffset[3] = { 0, 0, 0 };
+  float srow[12] = { 0 };
+};
+
+void WriteNifti(const std::string& path, const NiftiHeader& h)
+{
+  char b[352] = {};
+  auto put = [&b](int at, const void* v, int n) { std::memcpy(b + at, v, n); };
+  const int size = 348;
+  put(0, &size, 4);
+  const short dim[8] = { 3, 4, 3, 2, 1, 1, 1, 1 };
+  put(40, dim, 16);
+  const short datatype = 4, bitpix = 16; // int16
+  put(70, &datatype, 2);
+  put(72, &bitpix, 2);
+  put(76, h.pixdim, 16);
+  const float voxOffset = 352;
+  put(108, &voxOffset, 4);
+  b[123] = 2; // millimetres
+  put(252, &h.qformCode, 2);
+  put(254, &h.sformCode, 2);
+  put(256, h.quatern, 12);
+  put(268, h.qoffset, 12);
+  put(280, h.srow, 48);
+  put(344, "n+1", 4);
+  std::ofstream f(path, std::ios::binary);
+  f.write(b, sizeof b);
+  for (short k = 0; k < 2; ++k)
+    for (short j = 0; j < 3; ++j)
+      for (short i = 0; i < 4; ++i)
+      {
+        const short v = i + 10 * j + 100 * k;
+        f.write(reinterpret_cast<const char*>(&v), 2);
+      }
+}
+
+// Every loaded voxel lies where `ras` puts the file's voxel (i, j, k) it holds, in LPS: (-x, -y, z).
+template <class Ras>
+void ExpectPlacedAt(const std::string& path, Ras ras)
+{
+  auto img = art::LoadVolume(path);
+  int d[3];
+  img->GetDimensions(d);
+  ASSERT_EQ(d[0] * d[1] * d[2], 24) << path;
+  const int* e = img->GetExtent();
+  vtkDataArray* s = img->GetPointData()->GetScalars();
+  for (int K = 0; K < d[2]; ++K)
+    for (int J = 0; J < d[1]; ++J)
+      for (int I = 0; I < d[0]; ++I)
+      {
+        const int v = static_cast<int>(s->GetTuple1(I + d[0] * (J + d[1] * K)));
+        const std::array<double, 3> want = ras(v % 10, v / 10 % 10, v / 100);
+        double x[3];
+        img->TransformContinuousIndexToPhysicalPoint(e[0] + I, e[2] + J, e[4] + K, x);
+        EXPECT_NEAR(x[0], -want[0], 1e-5) << path << " voxel " << v;
+        EXPECT_NEAR(x[1], -want[1], 1e-5) << path << " voxel " << v;
+        EXPECT_NEAR(x[2], want[2], 1e-5) << path << " voxel " << v;
+      }
+}
+
+// vtkNIFTIImageReader leaves qform and sform to the caller: a radiological file (x flipped)
+// rendered mirrored. The sform (else the qform) now places the voxels, as nibabel chooses, in the
+// LPS world of DICOM and ITK's MetaImage (NIfTI's RAS with x and y negated).
+TEST(Formats, NiftiQformAndSformPlaceTheVoxels)
+{
+  NiftiHeader radiological; // sform only, x flipped
+  radiological.sformCode = 2;
+  const float srow[12] = { -2, 0, 0, 10, 0, 3, 0, 20, 0, 0, 4, 30 };
+  std::copy(srow, srow + 12, radiological.srow);
+  WriteNifti(Dir() + "/sform.nii", radiological);
+  ExpectPlacedAt(Dir() + "/sform.nii", [](int i, int j, int k) {
+    return std::array<double, 3>{ 10.0 - 2 * i, 20.0 + 3 * j, 30.0 + 4 * k };
+  });
+  // The sform's scale wins over pixdim.
+  NiftiHeader scaled = radiological;
+  std::fill(scaled.pixdim, scaled.pixdim + 4, 1.0f);
+  WriteNifti(Dir() + "/sform-scaled.nii", scaled);
+  ExpectPlacedAt(Dir() + "/sform-scaled.nii", [](int i, int j, int k) {
+    return std::array<double, 3>{ 10.0 - 2 * i, 20.0 + 3 * j, 30.0 + 4 * k };
+  });
+
+  NiftiHeader qfac; // qform only, slices reversed by qfac = -1 (VTK reorders them)
+  qfac.qformCode = 1;
+  qfac.pixdim[0] = -1;
+  const float offset[3] = { 10, 20, 30 };
+  std::copy(offset, offset + 3, qfac.qoffset);
+  WriteNifti(Dir() + "/qfac.nii", qfac);
+  ExpectPlacedAt(Dir() + "/qfac.nii", [](int i, int j, int k) {
+    return std::array<double, 3>{ 10.0 + 2 * i, 20.0 + 3 * j, 30.0 - 4 * k };
+  });
+
+  NiftiHeader turned; // qform turned 90 degrees about z
+  turned.qformCode = 1;
+  turned.quatern[2] = static_cast<float>(std::sqrt(0.5));
+  const float offset2[3] = { 1, 2, 3 };
+  std::copy(offset2, offset2 + 3, turned.qoffset);
+  WriteNifti(Dir() + "/qform.nii", turned);
+  const auto turnedRas = [](int i, int j, int k) { return std::array<double, 3>{ 1.0 - 3 * j, 2.0 + 2 * i, 3.0 + 4 * k }; };
+  ExpectPlacedAt(Dir() + "/qform.nii", turnedRas);
+
+  NiftiHeader both = turned; // the sform wins
+  both.sformCode = 1;
+  std::copy(srow, srow + 12, both.srow);
+  WriteNifti(Dir() + "/both.nii", both);
+  ExpectPlacedAt(Dir() + "/both.nii", [](int i, int j, int k) {
+    return std::array<double, 3>{ 10.0 - 2 * i, 20.0 + 3 * j, 30.0 + 4 * k };
+  });
+
+  NiftiHeader sheared = both; // a sheared sform gives way to the qform ...
+  sheared.srow[1] = 1;
+  WriteNifti(Dir() + "/sheared.nii", sheared);
+  ExpectPlacedAt(Dir() + "/sheared.nii", turnedRas);
+  sheared.qformCode = 0; // ... and without one is an error
+  WriteNifti(Dir() + "/sheared-alone.nii", sheared);
+  EXPECT_THROW(
+    {
+      try
+      {
+        art::LoadVolume(Dir() + "/sheared-alone.nii");
+      }
+      catch (const art::Error& e)
+      {
+        EXPECT_NE(std::string(e.what()).find("sheared"), std::string::npos) << e.what();
+        throw;
+      }
+    },
+    art::Error);
+
+  NiftiHeader none; // neither: spacing only, as before (NIfTI's method 1)
+  WriteNifti(Dir() + "/none.nii", none);
+  ExpectPlacedAt(Dir() + "/none.nii", [](int i, int j, int k) {
+    return std::array<double, 3>{ -2.0 * i, -3.0 * j, 4.0 * k };
+  });
 }
 
 TEST(Formats, MetaImageHeaderWithSeparateRaw)
