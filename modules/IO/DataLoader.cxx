@@ -4,7 +4,6 @@
 #include "Error.h"
 #include "MetaImageCheck.h"
 #include "NrrdCheck.h"
-#include "NrrdDirection.h"
 #include "ObjReader.h"
 #include "PlyCheck.h"
 #include "StlCheck.h"
@@ -416,9 +415,9 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   {
     img->SetDirectionMatrix(direction);
   }
-  if ((e == ".nrrd" || e == ".nhdr") && NrrdDirection(path, direction))
+  if (e == ".nrrd" || e == ".nhdr")
   {
-    img->SetDirectionMatrix(direction);
+    img = PlaceNrrd(img, path);
   }
   if (auto* dicom = vtkDICOMImageReader::SafeDownCast(reader))
   {

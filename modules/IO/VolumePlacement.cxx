@@ -1,14 +1,24 @@
 #include "VolumePlacement.h"
 #include "Error.h"
 
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNIFTIImageHeader.h>
 #include <vtkNIFTIImageReader.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
 
 namespace art
 {
@@ -102,7 +112,185 @@ Transform Choose(vtkNIFTIImageReader* r, const std::string& path)
   }
   return {};
 }
+// The "key: value" lines of a NRRD header, up to the first empty line.
+std::map<std::string, std::string> NrrdFields(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::map<std::string, std::string> keys;
+  std::string line;
+  for (int n = 0; n < 1000 && std::getline(in, line); ++n)
+  {
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    if (line.empty())
+    {
+      break;
+    }
+    const auto colon = line.find(':');
+    if (line[0] == '#' || colon == std::string::npos || line.compare(colon, 2, ":=") == 0)
+    {
+      continue;
+    }
+    std::string value = line.substr(colon + 1);
+    value.erase(0, value.find_first_not_of(" \t"));
+    keys[line.substr(0, colon)] = value;
+  }
+  return keys;
+}
+
+// "space directions": one "(x,y,z)" vector per axis, or "none" (an empty vector) for a
+// non-spatial axis.
+std::vector<std::vector<double>> NrrdDirections(const std::string& value, const std::string& path)
+{
+  std::vector<std::vector<double>> axes;
+  std::istringstream words(value);
+  std::string w;
+  while (words >> w)
+  {
+    std::vector<double> v;
+    if (w != "none")
+    {
+      std::string inside = w.substr(w.find('(') + 1);
+      inside = inside.substr(0, inside.find(')'));
+      std::replace(inside.begin(), inside.end(), ',', ' ');
+      std::istringstream numbers(inside);
+      double x;
+      while (numbers >> x)
+      {
+        v.push_back(x);
+      }
+      if (w.front() != '(' || w.back() != ')' || v.empty())
+      {
+        throw Error("cannot read space directions '" + value + "'", path);
+      }
+    }
+    axes.push_back(v);
+  }
+  return axes;
+}
 } // namespace
+
+vtkSmartPointer<vtkImageData> PlaceNrrd(vtkImageData* img, const std::string& path)
+{
+  auto keys = NrrdFields(path);
+  std::vector<long long> sizes;
+  {
+    std::istringstream in(keys["sizes"]);
+    long long n;
+    while (in >> n)
+    {
+      sizes.push_back(n);
+    }
+  }
+  std::vector<std::string> kinds;
+  {
+    std::istringstream in(keys["kinds"]);
+    std::string k;
+    while (in >> k)
+    {
+      std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
+      kinds.push_back(k);
+    }
+  }
+  const auto dirs = NrrdDirections(keys["space directions"], path);
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  out->ShallowCopy(img);
+  bool rebuilt = false;
+
+  // vtkNrrdReader makes a first axis of <= 9 samples the components; undo it when the header
+  // says the axis is in space (the voxels' memory order is the same either way).
+  vtkDataArray* s = img->GetPointData()->GetScalars();
+  const bool spatialFirst = sizes.size() == 3 &&
+    (kinds.size() == 3 ? (kinds[0] == "domain" || kinds[0] == "space") : (dirs.size() == 3 && !dirs[0].empty()));
+  if (spatialFirst && s && s->GetNumberOfComponents() > 1 && s->GetNumberOfComponents() == sizes[0])
+  {
+    vtkSmartPointer<vtkDataArray> one = vtk::TakeSmartPointer(s->NewInstance());
+    one->SetName(s->GetName());
+    one->SetNumberOfComponents(1);
+    one->SetNumberOfTuples(s->GetNumberOfValues());
+    std::memcpy(one->GetVoidPointer(0), s->GetVoidPointer(0), s->GetNumberOfValues() * s->GetDataTypeSize());
+    out = vtkSmartPointer<vtkImageData>::New();
+    rebuilt = true;
+    out->SetDimensions(int(sizes[0]), int(sizes[1]), int(sizes[2]));
+    out->SetOrigin(img->GetOrigin());
+    out->GetPointData()->SetScalars(one);
+    double spacing[3] = { 1, 1, 1 };
+    std::istringstream in(keys["spacings"]);
+    for (double& h : spacing)
+    {
+      double x;
+      if (in >> x && x > 0 && std::isfinite(x))
+      {
+        h = x;
+      }
+    }
+    out->SetSpacing(spacing);
+  }
+
+  // The spatial axes' directions (signs and rotation; VTK kept their lengths as the spacing).
+  double direction[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  std::vector<std::vector<double>> spatial;
+  std::copy_if(dirs.begin(), dirs.end(), std::back_inserter(spatial), [](const auto& v) { return !v.empty(); });
+  if (spatial.size() == 3)
+  {
+    double spacing[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      if (spatial[c].size() != 3)
+      {
+        throw Error("a space direction has " + std::to_string(spatial[c].size()) + " coordinates, expected 3", path);
+      }
+      const double len = std::sqrt(spatial[c][0] * spatial[c][0] + spatial[c][1] * spatial[c][1] + spatial[c][2] * spatial[c][2]);
+      if (!(len > 0) || !std::isfinite(len))
+      {
+        throw Error("a space direction has zero or non-finite length", path);
+      }
+      spacing[c] = len;
+      for (int r = 0; r < 3; ++r)
+      {
+        direction[3 * r + c] = spatial[c][r] / len;
+      }
+    }
+    out->SetSpacing(spacing);
+  }
+  std::string space = keys["space"];
+  std::transform(space.begin(), space.end(), space.begin(), [](unsigned char c) { return std::tolower(c); });
+  const bool ras = space == "right-anterior-superior" || space == "ras" || space == "right-anterior-superior-time" || space == "rast";
+  const bool las = space == "left-anterior-superior" || space == "las" || space == "left-anterior-superior-time" || space == "last";
+  double origin[3];
+  out->GetOrigin(origin);
+  // In a left-handed space vtkNrrdReader reverses the rows of its y axis (the header's second
+  // axis, or its third when the first became components) and keeps the origin: the first voxel
+  // is then the header's last along that axis.
+  if (las || space == "3d-left-handed" || space == "3d-left-handed-time")
+  {
+    const int a = rebuilt ? 2 : 1;
+    const int n = out->GetDimensions()[a];
+    const double h = out->GetSpacing()[a];
+    for (int r = 0; r < 3; ++r)
+    {
+      origin[r] += direction[3 * r + a] * h * (n - 1);
+      direction[3 * r + a] = -direction[3 * r + a];
+    }
+  }
+  // A RAS or LAS space becomes LPS, as ITK reads it.
+  for (int r = 0; r < 2; ++r)
+  {
+    if (ras || (las && r == 1))
+    {
+      origin[r] = -origin[r];
+      for (int c = 0; c < 3; ++c)
+      {
+        direction[3 * r + c] = -direction[3 * r + c];
+      }
+    }
+  }
+  out->SetOrigin(origin);
+  out->SetDirectionMatrix(direction);
+  return out;
+}
 
 void PlaceNifti(vtkImageData* img, vtkNIFTIImageReader* reader, const std::string& path)
 {

@@ -1,11 +1,14 @@
-// VolumePlacement: puts a NIfTI volume's voxels where its sform or qform says. vtkNIFTIImageReader
-// reports both matrices but leaves the image at origin 0 without a direction, so a radiological
-// (x-flipped) file rendered mirrored. The world is the LPS patient frame that DICOM, ITK's
-// MetaImage and our other readers use; NIfTI's own world is RAS, so its x and y are negated.
+// VolumePlacement: puts NIfTI and NRRD voxels where their headers say, in the LPS patient frame
+// that DICOM and ITK's MetaImage use. vtkNIFTIImageReader leaves the sform and qform to the caller
+// (a radiological, x-flipped file rendered mirrored); NIfTI's world is RAS, so x and y are negated.
+// vtkNrrdReader keeps only the lengths of "space directions", ignores "space", and reads a first
+// axis of 9 or fewer samples as vector components even when the header calls it a domain axis.
 #ifndef art_VolumePlacement_h
 #define art_VolumePlacement_h
 
 #include "AdaptiveRTIOModule.h"
+
+#include <vtkSmartPointer.h>
 
 #include <string>
 
@@ -27,6 +30,12 @@ struct NiftiPlacementInfo
 };
 /// Which transform of the NIfTI file `path` places its voxels (its header only is read), for `info`.
 ADAPTIVERTIO_EXPORT NiftiPlacementInfo NiftiPlacement(const std::string& path);
+
+/// Returns `img` (or a rebuilt copy) with the geometry of the NRRD header in `path`: a first
+/// axis that the header makes spatial (kind domain or space, or a space direction) but VTK read as
+/// components becomes the x axis again; "space directions" give the direction and spacing; a
+/// RAS or LAS "space" is turned into LPS. A zero direction is an art::Error naming `path`.
+ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> PlaceNrrd(vtkImageData* img, const std::string& path);
 
 /// The anatomical directions the voxel axes i, j, k point to in the LPS world, nibabel's axis
 /// codes: "RAS" for a volume whose direction is diag(-1, -1, 1), "LPS" for the identity.

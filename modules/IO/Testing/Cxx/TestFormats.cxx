@@ -394,6 +394,62 @@ TEST(Formats, NrrdSpaceDirections)
   EXPECT_THROW(art::LoadVolume(Dir() + "/zero.nrrd"), art::Error);
 }
 
+// vtkNrrdReader read a first axis of 9 or fewer samples as vector components even when the header
+// calls it a domain axis: a 4 x 3 x 2 volume loaded as 3 x 2 x 1 voxels of 4 components with the
+// spacing of the wrong axes. It ignores "space" (a RAS file, x and y opposite to LPS, was placed
+// as if LPS), and in a left-handed space (LAS) it reverses the rows but keeps the origin (a
+// mirror). Voxel v = i + nx (j + 3 k) of the file lies where the header puts it, in LPS.
+TEST(Formats, NrrdNarrowFirstAxisAndSpaces)
+{
+  auto write = [](const std::string& name, int nx, const std::string& fields) {
+    std::ofstream f(Dir() + "/" + name, std::ios::binary);
+    f << "NRRD0004\ntype: short\ndimension: 3\nsizes: " << nx << " 3 2\n" << fields << "encoding: raw\nendian: little\n\n";
+    for (short v = 0; v < nx * 6; ++v)
+    {
+      f.write(reinterpret_cast<const char*>(&v), 2);
+    }
+  };
+  auto expectAt = [](const std::string& name, int nx, const std::array<double, 3>& o, const std::array<double, 3>& step) {
+    auto img = art::LoadVolume(Dir() + "/" + name);
+    int d[3];
+    img->GetDimensions(d);
+    ASSERT_EQ(d[0], nx) << name;
+    ASSERT_EQ(d[1], 3) << name;
+    ASSERT_EQ(d[2], 2) << name;
+    vtkDataArray* s = img->GetPointData()->GetScalars();
+    ASSERT_EQ(s->GetNumberOfComponents(), 1) << name;
+    for (int I = 0; I < nx * 6; ++I)
+    {
+      const int v = static_cast<int>(s->GetTuple1(I));
+      const int file[3] = { v % nx, v / nx % 3, v / (3 * nx) };
+      double x[3];
+      img->TransformContinuousIndexToPhysicalPoint(I % nx, I / nx % 3, I / (3 * nx), x);
+      for (int a = 0; a < 3; ++a)
+      {
+        EXPECT_NEAR(x[a], o[a] + step[a] * file[a], 1e-9) << name << " voxel " << v << " axis " << a;
+      }
+    }
+  };
+  const std::string directions = "space directions: (0.5,0,0) (0,2,0) (0,0,3)\nspace origin: (10,20,30)\n";
+  for (const int nx : { 4, 11 })
+  {
+    const std::string n = std::to_string(nx);
+    write("kinds-" + n + ".nrrd", nx, "kinds: domain domain domain\nspacings: 0.5 2 3\n");
+    expectAt("kinds-" + n + ".nrrd", nx, { 0, 0, 0 }, { 0.5, 2, 3 });
+    write("lps-" + n + ".nrrd", nx, "space: left-posterior-superior\n" + directions);
+    expectAt("lps-" + n + ".nrrd", nx, { 10, 20, 30 }, { 0.5, 2, 3 });
+    write("ras-" + n + ".nrrd", nx, "space: right-anterior-superior\n" + directions);
+    expectAt("ras-" + n + ".nrrd", nx, { -10, -20, 30 }, { -0.5, -2, 3 });
+    write("las-" + n + ".nrrd", nx, "space: LAS\n" + directions);
+    expectAt("las-" + n + ".nrrd", nx, { 10, -20, 30 }, { 0.5, -2, 3 });
+    write("left-handed-" + n + ".nrrd", nx, "space: 3D-left-handed\n" + directions);
+    expectAt("left-handed-" + n + ".nrrd", nx, { 10, 20, 30 }, { 0.5, 2, 3 });
+  }
+  // A first axis the header calls a vector stays the components.
+  write("vectors.nrrd", 4, "kinds: vector domain domain\n");
+  EXPECT_EQ(art::LoadVolume(Dir() + "/vectors.nrrd")->GetPointData()->GetScalars()->GetNumberOfComponents(), 4);
+}
+
 TEST(Formats, DicomSeriesFolder)
 {
   // tests/data/dicom: 4 slices of 16 x 12 cut from the default CT (tests/data/make_dicom.py).
