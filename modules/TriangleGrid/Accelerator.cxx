@@ -23,6 +23,17 @@ Counters Accelerator::ClosestBatch(const std::vector<Ray>& rays, std::vector<Hit
   });
 }
 
+Counters Accelerator::ClosestPointBatch(const std::vector<Vec3>& xs, std::vector<NearestPoint>& out) const
+{
+  out.assign(xs.size(), NearestPoint());
+  return ForEachRange(static_cast<long long>(xs.size()), 256, [&](long long b, long long e, Counters& c) {
+    for (long long i = b; i < e; ++i)
+    {
+      ClosestPoint(xs[i], std::numeric_limits<double>::infinity(), out[i], c);
+    }
+  });
+}
+
 Counters Accelerator::AnyBatch(const std::vector<Ray>& rays, std::vector<unsigned char>& occluded) const
 {
   occluded.assign(rays.size(), 0);

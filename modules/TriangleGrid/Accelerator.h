@@ -27,6 +27,17 @@ struct Hit
   long long record = -1;   ///< record index in the store (for shading: Store().Record(record))
 };
 
+/// The answer of a nearest-point query.
+struct NearestPoint
+{
+  double dist2 = std::numeric_limits<double>::infinity(); ///< squared distance to `point`
+  Vec3 point;              ///< the closest point (store coordinates)
+  long long triangle = -1; ///< input-order index (TriangleStore::OriginalIndex)
+  long long record = -1;   ///< record index in the store
+  double u = 0, v = 0;     ///< point = p0 + u (p1 - p0) + v (p2 - p0) on the record's vertices
+  bool inside = false;     ///< the query point projects inside the triangle (face region)
+};
+
 enum class AcceleratorKind
 {
   BruteForce,
@@ -56,6 +67,13 @@ public:
   /// Every hit in [r.tmin, r.tmax], sorted by t; where the ray crosses an edge or vertex shared
   /// by several triangles the surface is reported once.
   virtual void All(const Ray& r, std::vector<Hit>& hits, Counters& c) const = 0;
+  /// The point of the surface nearest x (store coordinates) closer than sqrt(maxDist2), exact in
+  /// double on the store's points; a best-first walk of the structure's voxels bounded by the best
+  /// distance so far. Of equally near triangles the lowest input index wins. False when none is
+  /// closer than that (or x is not finite).
+  virtual bool ClosestPoint(const Vec3& x, double maxDist2, NearestPoint& out, Counters& c) const = 0;
+  /// Input-order ids of every triangle that intersects the closed box, sorted, unique.
+  virtual void InBox(const Box3& box, std::vector<long long>& ids, Counters& c) const = 0;
   /// Bytes of the acceleration structure, not counting the store.
   virtual size_t MemoryBytes() const = 0;
   /// "uniform grid 64x60x48", "R[16,4]", "O[4,15]" ...
@@ -68,6 +86,8 @@ public:
 
   /// Closest hits of many rays in parallel (art::ForEachRange); hits[i] belongs to rays[i].
   Counters ClosestBatch(const std::vector<Ray>& rays, std::vector<Hit>& hits) const;
+  /// Nearest points of many query points in parallel (no radius); out[i] belongs to xs[i].
+  Counters ClosestPointBatch(const std::vector<Vec3>& xs, std::vector<NearestPoint>& out) const;
   /// Any-hit of many rays in parallel; occluded[i] is 1 when rays[i] hits something.
   Counters AnyBatch(const std::vector<Ray>& rays, std::vector<unsigned char>& occluded) const;
 

@@ -3,11 +3,17 @@
 // voxel the ray enters, front to back, and stops when the visitor returns true. Closest keeps the
 // nearest hit found so far and stops once it lies before the current voxel's exit (so a hit found
 // in an earlier voxel but lying further on is never taken for the answer too early).
+// Point queries: a structure supplies Near(x, prune2, visitor, c), calling visitor(ids, count) for
+// the voxels that may hold a triangle within sqrt(prune2) of x, nearest first where it can, and
+// re-reading prune2 (which the visitor shrinks) before each; and Overlap(box, visitor) for the
+// voxels that touch a box.
 #ifndef art_AcceleratorQueries_h
 #define art_AcceleratorQueries_h
 
 #include "Accelerator.h"
 #include "Box3.h"
+#include "ClosestPoint.h"
+#include "TriBoxOverlap.h"
 #include "WatertightTest.h"
 
 #include <algorithm>
@@ -160,6 +166,90 @@ public:
     static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
     SortAndMergeHits(*S, hits, 1e-7 * S->Bounds().Diagonal() * p.invLen);
     c.hits += hits.empty() ? 0 : 1;
+  }
+
+  bool ClosestPoint(const Vec3& x, double maxDist2, NearestPoint& out, Counters& c) const override
+  {
+    out = NearestPoint();
+    if (!IsFinite(x) || !(maxDist2 > 0))
+    {
+      return false;
+    }
+    const TriangleRecord* rec = S->Data();
+    const Vec3* P = S->Points().data();
+    const double slack = FloatSlack(S->Bounds());
+    double best2 = maxDist2;
+    double prune2 = std::isinf(maxDist2) ? maxDist2 : (std::sqrt(maxDist2) + slack) * (std::sqrt(maxDist2) + slack);
+    Mailbox mb;
+    auto visit = [&](const std::uint32_t* ids, std::uint32_t n) {
+      for (std::uint32_t k = 0; k < n; ++k)
+      {
+        const std::uint32_t id = ids[k];
+        if (mb.Seen(id))
+        {
+          continue;
+        }
+        ++c.trianglesTested;
+        const TriangleRecord& t = rec[id];
+        Vec3 q;
+        double u, v;
+        const bool in = ClosestPointOnTriangle(x, P[t.v[0]], P[t.v[1]], P[t.v[2]], q, u, v);
+        const Vec3 e = x - q;
+        const double d2 = Dot(e, e);
+        // Ties go to the lowest input index, so every structure gives the same answer.
+        if (d2 < best2 || (d2 == best2 && out.record >= 0 && S->OriginalIndex(id) < out.triangle))
+        {
+          best2 = d2;
+          out.dist2 = d2;
+          out.point = q;
+          out.record = id;
+          out.triangle = S->OriginalIndex(id);
+          out.u = u;
+          out.v = v;
+          out.inside = in;
+          const double r = std::sqrt(d2) + slack;
+          prune2 = r * r;
+        }
+      }
+    };
+    static_cast<const Derived*>(this)->Near(x, prune2, visit, c);
+    if (out.record < 0)
+    {
+      out = NearestPoint();
+      return false;
+    }
+    ++c.hits;
+    return true;
+  }
+
+  void InBox(const Box3& box, std::vector<long long>& out, Counters& c) const override
+  {
+    out.clear();
+    if (box.Empty() || !IsFinite(box.lo) || !IsFinite(box.hi))
+    {
+      return;
+    }
+    std::vector<std::uint32_t> recs;
+    auto visit = [&](const std::uint32_t* ids, std::uint32_t n) {
+      ++c.voxelsVisited;
+      recs.insert(recs.end(), ids, ids + n);
+    };
+    static_cast<const Derived*>(this)->Overlap(box, visit);
+    std::sort(recs.begin(), recs.end());
+    recs.erase(std::unique(recs.begin(), recs.end()), recs.end());
+    const Vec3* P = S->Points().data();
+    const Vec3 centre = box.Center(), half = box.Size() * 0.5;
+    for (std::uint32_t id : recs)
+    {
+      ++c.trianglesTested;
+      const TriangleRecord& t = S->Record(id);
+      if (TriBoxOverlap(centre, half, P[t.v[0]], P[t.v[1]], P[t.v[2]]))
+      {
+        out.push_back(S->OriginalIndex(id));
+      }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
   }
 
   void Candidates(const Ray& r, std::vector<long long>& out, Counters& c) const override

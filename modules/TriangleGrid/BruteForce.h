@@ -28,6 +28,19 @@ public:
     visit(Ids.data(), static_cast<std::uint32_t>(Ids.size()), std::numeric_limits<double>::infinity());
   }
 
+  template <class Visitor>
+  void Near(const Vec3&, const double&, Visitor& visit, Counters& c) const
+  {
+    ++c.voxelsVisited;
+    visit(Ids.data(), static_cast<std::uint32_t>(Ids.size()));
+  }
+
+  template <class Visitor>
+  void Overlap(const Box3&, Visitor& visit) const
+  {
+    visit(Ids.data(), static_cast<std::uint32_t>(Ids.size()));
+  }
+
 private:
   std::vector<std::uint32_t> Ids;
 };

@@ -36,12 +36,111 @@ public:
     WalkNode(0, lo, hi, p, t0, t1, visit, c);
   }
 
+  /// Nearest-point walk (see AcceleratorQueries.h): depth first, the nearer children first.
+  template <class Visitor>
+  void Near(const Vec3& x, const double& prune2, Visitor& visit, Counters& c) const
+  {
+    const double lo[3] = { Root.lo.x, Root.lo.y, Root.lo.z }, hi[3] = { Root.hi.x, Root.hi.y, Root.hi.z };
+    if (!Nodes.empty() && BoxDistance2(lo, hi, x) <= prune2)
+    {
+      NearNode(0, lo, hi, x, prune2, visit, c);
+    }
+  }
+
+  /// The leaves that touch the closed box.
+  template <class Visitor>
+  void Overlap(const Box3& b, Visitor& visit) const
+  {
+    const double lo[3] = { Root.lo.x, Root.lo.y, Root.lo.z }, hi[3] = { Root.hi.x, Root.hi.y, Root.hi.z };
+    if (!Nodes.empty())
+    {
+      OverlapNode(0, lo, hi, b, visit);
+    }
+  }
+
 private:
   struct ONode
   {
     std::uint32_t first, count; ///< count == Internal: first is the first of 8 children
   };
   static constexpr std::uint32_t Internal = 0xffffffffu;
+
+  static void ChildBox(const double lo[3], const double hi[3], int bits, double clo[3], double chi[3])
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double mid = 0.5 * (lo[a] + hi[a]);
+      clo[a] = bits & (1 << a) ? mid : lo[a];
+      chi[a] = bits & (1 << a) ? hi[a] : mid;
+    }
+  }
+
+  template <class Visitor>
+  void NearNode(std::uint32_t n, const double lo[3], const double hi[3], const Vec3& x, const double& prune2,
+    Visitor& visit, Counters& c) const
+  {
+    ++c.voxelsVisited;
+    const ONode node = Nodes[n];
+    if (node.count != Internal)
+    {
+      if (node.count != 0)
+      {
+        visit(Ids.data() + node.first, node.count);
+      }
+      return;
+    }
+    // The eight children by distance (insertion sort), then visited while they can hold a nearer one.
+    double d2[8];
+    int order[8];
+    for (int k = 0; k < 8; ++k)
+    {
+      double clo[3], chi[3];
+      ChildBox(lo, hi, k, clo, chi);
+      const double d = BoxDistance2(clo, chi, x);
+      int m = k;
+      for (; m > 0 && d2[m - 1] > d; --m)
+      {
+        d2[m] = d2[m - 1];
+        order[m] = order[m - 1];
+      }
+      d2[m] = d;
+      order[m] = k;
+    }
+    for (int m = 0; m < 8 && d2[m] <= prune2; ++m)
+    {
+      double clo[3], chi[3];
+      ChildBox(lo, hi, order[m], clo, chi);
+      NearNode(node.first + order[m], clo, chi, x, prune2, visit, c);
+    }
+  }
+
+  template <class Visitor>
+  void OverlapNode(std::uint32_t n, const double lo[3], const double hi[3], const Box3& b, Visitor& visit) const
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      const double pad = 1e-6 * (hi[a] - lo[a]); // a triangle in a voxel face is in both voxels
+      if (b.hi[a] < lo[a] - pad || b.lo[a] > hi[a] + pad)
+      {
+        return;
+      }
+    }
+    const ONode node = Nodes[n];
+    if (node.count != Internal)
+    {
+      if (node.count != 0)
+      {
+        visit(Ids.data() + node.first, node.count);
+      }
+      return;
+    }
+    for (int k = 0; k < 8; ++k)
+    {
+      double clo[3], chi[3];
+      ChildBox(lo, hi, k, clo, chi);
+      OverlapNode(node.first + k, clo, chi, b, visit);
+    }
+  }
 
   template <class Visitor>
   bool WalkNode(std::uint32_t n, const double lo[3], const double hi[3], const RayPrep& p, double t0,

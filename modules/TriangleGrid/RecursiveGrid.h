@@ -60,6 +60,26 @@ public:
     WalkNode(0, p, t0, t1, delta, visit, c);
   }
 
+  /// Nearest-point walk (see AcceleratorQueries.h): rings of growing radius around x's cell.
+  template <class Visitor>
+  void Near(const Vec3& x, const double& prune2, Visitor& visit, Counters& c) const
+  {
+    if (!Nodes.empty())
+    {
+      NearNode(0, x, prune2, visit, c);
+    }
+  }
+
+  /// The leaves of every voxel that touches the closed box.
+  template <class Visitor>
+  void Overlap(const Box3& b, Visitor& visit) const
+  {
+    if (!Nodes.empty())
+    {
+      OverlapNode(0, b, visit);
+    }
+  }
+
 protected:
   struct Node
   {
@@ -153,6 +173,153 @@ protected:
     }
     c.voxelsVisited += visited;
     return stop;
+  }
+
+  // Searches the grid node g ring by ring (Chebyshev rings of cells around the cell nearest x): a
+  // ring can hold nothing nearer than the nearest of its faces' slabs, so the rings stop once that
+  // bound passes the best distance so far; within a ring, cells beyond it are skipped too.
+  template <class Visitor>
+  void NearNode(std::uint32_t g, const Vec3& x, const double& prune2, Visitor& visit, Counters& c) const
+  {
+    const Node& G = Nodes[g];
+    const Cell* cells = Cells.data() + G.firstCell;
+    int ci[3], maxR = 0;
+    double out2[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double hi = G.lo[a] + G.n[a] * G.cs[a];
+      const double o = x[a] < G.lo[a] ? G.lo[a] - x[a] : (x[a] > hi ? x[a] - hi : 0.0);
+      out2[a] = o * o;
+      const double f = std::floor((x[a] - G.lo[a]) * G.invCs[a]);
+      ci[a] = f < 0 ? 0 : (f >= G.n[a] ? G.n[a] - 1 : static_cast<int>(f));
+      maxR = std::max(maxR, std::max(ci[a], G.n[a] - 1 - ci[a]));
+    }
+    auto cell = [&](int i, int j, int k) {
+      const double lo[3] = { G.lo[0] + i * G.cs[0], G.lo[1] + j * G.cs[1], G.lo[2] + k * G.cs[2] };
+      const double hi[3] = { lo[0] + G.cs[0], lo[1] + G.cs[1], lo[2] + G.cs[2] };
+      if (BoxDistance2(lo, hi, x) > prune2)
+      {
+        return;
+      }
+      ++c.voxelsVisited;
+      const Cell& cl = cells[(static_cast<long long>(k) * G.n[1] + j) * G.n[0] + i];
+      if (cl.count == Child)
+      {
+        NearNode(cl.begin, x, prune2, visit, c);
+      }
+      else if (cl.count != 0)
+      {
+        visit(Ids.data() + cl.begin, cl.count);
+      }
+    };
+    cell(ci[0], ci[1], ci[2]);
+    for (int r = 1; r <= maxR; ++r)
+    {
+      double face2[3][2];
+      double ring2 = std::numeric_limits<double>::infinity();
+      for (int a = 0; a < 3; ++a)
+      {
+        for (int s = 0; s < 2; ++s)
+        {
+          const int idx = ci[a] + (s ? r : -r);
+          face2[a][s] = std::numeric_limits<double>::infinity();
+          if (idx < 0 || idx >= G.n[a])
+          {
+            continue;
+          }
+          const double gap = std::max(0.0, s ? G.lo[a] + idx * G.cs[a] - x[a] : x[a] - (G.lo[a] + (idx + 1) * G.cs[a]));
+          face2[a][s] = gap * gap + out2[(a + 1) % 3] + out2[(a + 2) % 3];
+          ring2 = std::min(ring2, face2[a][s]);
+        }
+      }
+      if (ring2 > prune2)
+      {
+        break; // every further ring lies further still
+      }
+      // Face (a, s) of the ring: axis a at ci[a] -+ r, axes before a strictly inside the ring,
+      // axes after it across the whole ring, so each cell of the ring is visited once.
+      for (int a = 0; a < 3; ++a)
+      {
+        for (int s = 0; s < 2; ++s)
+        {
+          const int idx = ci[a] + (s ? r : -r);
+          if (idx < 0 || idx >= G.n[a] || face2[a][s] > prune2)
+          {
+            continue;
+          }
+          int lo[3], hi[3];
+          const double reach = std::sqrt(prune2);
+          for (int b = 0; b < 3; ++b)
+          {
+            if (b == a)
+            {
+              lo[b] = hi[b] = idx;
+              continue;
+            }
+            const int in = b < a ? 1 : 0;
+            lo[b] = std::max(ci[b] - r + in, 0);
+            hi[b] = std::min(ci[b] + r - in, G.n[b] - 1);
+            if (reach < std::numeric_limits<double>::infinity())
+            {
+              // Cells whose slab along b lies beyond the reach cannot hold anything nearer.
+              const double l = std::floor((x[b] - reach - G.lo[b]) * G.invCs[b]);
+              const double h = std::floor((x[b] + reach - G.lo[b]) * G.invCs[b]);
+              lo[b] = l > lo[b] ? static_cast<int>(std::min(l, double(G.n[b]))) : lo[b];
+              hi[b] = h < hi[b] ? static_cast<int>(std::max(h, -1.0)) : hi[b];
+            }
+          }
+          for (int k = lo[2]; k <= hi[2]; ++k)
+          {
+            for (int j = lo[1]; j <= hi[1]; ++j)
+            {
+              for (int i = lo[0]; i <= hi[0]; ++i)
+              {
+                cell(i, j, k);
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+
+  template <class Visitor>
+  void OverlapNode(std::uint32_t g, const Box3& b, Visitor& visit) const
+  {
+    const Node& G = Nodes[g];
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      // A little wider than the box: a triangle in a voxel face was put in both voxels, and the
+      // exact test follows anyway.
+      const double l = std::floor((b.lo[a] - G.lo[a]) * G.invCs[a] - 1e-6);
+      const double h = std::floor((b.hi[a] - G.lo[a]) * G.invCs[a] + 1e-6);
+      if (h < 0 || l >= G.n[a])
+      {
+        return;
+      }
+      lo[a] = l < 0 ? 0 : static_cast<int>(l);
+      hi[a] = h >= G.n[a] ? G.n[a] - 1 : static_cast<int>(h);
+    }
+    const Cell* cells = Cells.data() + G.firstCell;
+    for (int k = lo[2]; k <= hi[2]; ++k)
+    {
+      for (int j = lo[1]; j <= hi[1]; ++j)
+      {
+        for (int i = lo[0]; i <= hi[0]; ++i)
+        {
+          const Cell& cl = cells[(static_cast<long long>(k) * G.n[1] + j) * G.n[0] + i];
+          if (cl.count == Child)
+          {
+            OverlapNode(cl.begin, b, visit);
+          }
+          else if (cl.count != 0)
+          {
+            visit(Ids.data() + cl.begin, cl.count);
+          }
+        }
+      }
+    }
   }
 
   std::vector<Node> Nodes;

@@ -4,6 +4,7 @@
 #include "Error.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellType.h>
 #include <vtkGenericCell.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
@@ -11,8 +12,10 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 vtkStandardNewMacro(vtkTriangleGridLocator);
 
@@ -37,13 +40,20 @@ vtkTriangleGridLocator::~vtkTriangleGridLocator() = default;
 void vtkTriangleGridLocator::FreeSearchStructure()
 {
   this->Engine.reset();
+  this->Built = false;
 }
 
 void vtkTriangleGridLocator::BuildLocator()
 {
-  if (this->Engine && this->BuildTime > this->MTime && this->DataSet &&
-    this->BuildTime > this->DataSet->GetMTime())
+  // A failed build counts as built too, so a dataset without polygons gives one error, not one per query.
+  if (this->Built && this->BuildTime > this->MTime &&
+    (!this->DataSet || this->BuildTime > this->DataSet->GetMTime()))
   {
+    return;
+  }
+  if (this->Engine && this->UseExistingSearchStructure)
+  {
+    this->BuildTime.Modified();
     return;
   }
   this->BuildLocatorInternal();
@@ -57,11 +67,24 @@ void vtkTriangleGridLocator::ForceBuildLocator()
 void vtkTriangleGridLocator::BuildLocatorInternal()
 {
   this->FreeSearchStructure();
+  this->Built = true;
+  this->BuildTime.Modified();
   auto* pd = vtkPolyData::SafeDownCast(this->DataSet);
   if (!pd)
   {
     vtkErrorMacro(<< "needs a vtkPolyData input, got " << (this->DataSet ? this->DataSet->GetClassName() : "none"));
     return;
+  }
+  const vtkIdType others = pd->GetNumberOfVerts() + pd->GetNumberOfLines();
+  if (pd->GetNumberOfPolys() + pd->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro(<< "the dataset has no polygons or triangle strips to locate (" << pd->GetNumberOfCells()
+                  << " cells: " << pd->GetNumberOfVerts() << " vertex, " << pd->GetNumberOfLines() << " line)");
+    return;
+  }
+  if (others > 0)
+  {
+    vtkWarningMacro(<< others << " vertex and line cells are ignored: only polygons and strips are located");
   }
   try
   {
@@ -76,8 +99,13 @@ void vtkTriangleGridLocator::BuildLocatorInternal()
     o.subdivisions = this->Subdivisions;
     o.planeWeight = this->PlaneWeight;
     o.topLevelGrid = this->TopLevelGrid != 0;
+    if (store->Size() == 0)
+    {
+      vtkErrorMacro(<< "the dataset's " << pd->GetNumberOfPolys() + pd->GetNumberOfStrips()
+                    << " polygons and strips hold no triangle of non-zero area");
+      return;
+    }
     this->Engine = art::MakeAccelerator(store, o);
-    this->BuildTime.Modified();
   }
   catch (const std::exception& e)
   {
@@ -177,6 +205,131 @@ void vtkTriangleGridLocator::FindCellsAlongLine(const double p1[3], const double
   {
     cells->InsertNextId(id);
   }
+}
+
+bool vtkTriangleGridLocator::Nearest(const double x[3], double maxDist2, double closestPoint[3],
+  vtkIdType& cellId, double& dist2, bool& inside)
+{
+  this->BuildLocator();
+  cellId = -1;
+  inside = false;
+  if (!this->Engine)
+  {
+    return false;
+  }
+  art::NearestPoint np;
+  art::Counters c;
+  if (!this->Engine->ClosestPoint(art::Vec3(x) - art::Vec3(this->Origin), maxDist2, np, c))
+  {
+    return false;
+  }
+  const art::Vec3 p = np.point + art::Vec3(this->Origin);
+  closestPoint[0] = p.x;
+  closestPoint[1] = p.y;
+  closestPoint[2] = p.z;
+  cellId = np.triangle;
+  dist2 = np.dist2;
+  inside = np.inside;
+  return true;
+}
+
+void vtkTriangleGridLocator::Finish(
+  const double x[3], vtkIdType cellId, vtkGenericCell* cell, int& subId, bool& inside)
+{
+  subId = 0;
+  if (this->DataSet->GetCellType(cellId) == VTK_TRIANGLE)
+  {
+    if (cell)
+    {
+      this->DataSet->GetCell(cellId, cell);
+    }
+    return;
+  }
+  vtkNew<vtkGenericCell> own;
+  vtkGenericCell* gc = cell ? cell : own.GetPointer();
+  this->DataSet->GetCell(cellId, gc);
+  std::vector<double> weights(static_cast<size_t>(gc->GetNumberOfPoints()) + 1);
+  double cp[3], pcoords[3], d2;
+  inside = gc->EvaluatePosition(x, cp, subId, pcoords, d2, weights.data()) == 1;
+}
+
+void vtkTriangleGridLocator::FindClosestPoint(const double x[3], double closestPoint[3],
+  vtkGenericCell* cell, vtkIdType& cellId, int& subId, double& dist2)
+{
+  bool inside;
+  subId = 0;
+  if (!this->Nearest(x, std::numeric_limits<double>::infinity(), closestPoint, cellId, dist2, inside))
+  {
+    dist2 = VTK_DOUBLE_MAX;
+    return;
+  }
+  this->Finish(x, cellId, cell, subId, inside);
+}
+
+vtkIdType vtkTriangleGridLocator::FindClosestPointWithinRadius(double x[3], double radius,
+  double closestPoint[3], vtkGenericCell* cell, vtkIdType& cellId, int& subId, double& dist2, int& inside)
+{
+  bool in = false;
+  subId = 0;
+  inside = 0;
+  if (!(radius > 0) || !this->Nearest(x, radius * radius, closestPoint, cellId, dist2, in))
+  {
+    cellId = -1;
+    return 0;
+  }
+  this->Finish(x, cellId, cell, subId, in);
+  inside = in ? 1 : 0;
+  return 1;
+}
+
+void vtkTriangleGridLocator::FindCellsWithinBounds(double* bbox, vtkIdList* cells)
+{
+  this->BuildLocator();
+  cells->Reset();
+  if (!this->Engine || !bbox)
+  {
+    return;
+  }
+  art::Box3 b;
+  b.lo = art::Vec3(bbox[0], bbox[2], bbox[4]) - art::Vec3(this->Origin);
+  b.hi = art::Vec3(bbox[1], bbox[3], bbox[5]) - art::Vec3(this->Origin);
+  std::vector<long long> ids;
+  art::Counters c;
+  this->Engine->InBox(b, ids, c);
+  for (long long id : ids)
+  {
+    cells->InsertNextId(id);
+  }
+}
+
+vtkIdType vtkTriangleGridLocator::FindCell(
+  double x[3], double tol2, vtkGenericCell* cell, double pcoords[3], double* weights)
+{
+  double cp[3], d2;
+  vtkIdType cellId;
+  bool inside;
+  // Within tol means d2 <= tol2 (so tol2 = 0 still finds a point lying exactly on the surface).
+  if (!(tol2 >= 0) ||
+    !this->Nearest(x, std::nextafter(tol2, std::numeric_limits<double>::infinity()), cp, cellId, d2, inside))
+  {
+    return -1;
+  }
+  vtkNew<vtkGenericCell> own;
+  vtkGenericCell* gc = cell ? cell : own.GetPointer();
+  this->DataSet->GetCell(cellId, gc);
+  std::vector<double> w(static_cast<size_t>(gc->GetNumberOfPoints()) + 1);
+  int subId;
+  double pc[3];
+  gc->EvaluatePosition(x, cp, subId, pc, d2, w.data());
+  if (pcoords)
+  {
+    std::copy(pc, pc + 3, pcoords);
+  }
+  if (weights)
+  {
+    std::copy(w.begin(), w.begin() + gc->GetNumberOfPoints(), weights);
+  }
+  return cellId;
 }
 
 void vtkTriangleGridLocator::GenerateRepresentation(int level, vtkPolyData* pd)

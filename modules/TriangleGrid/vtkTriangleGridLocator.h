@@ -15,6 +15,22 @@
  *   one per surface where the segment crosses a shared edge or vertex. Returns 0 for no hit,
  *   otherwise -1 when p1 lies inside the closed surface and +1 when outside (by ray parity).
  * - FindCellsAlongLine: the unique cells in the voxels the segment passes.
+ * - FindClosestPoint / FindClosestPointWithinRadius: the exact closest point of the surface (in
+ *   double on the dataset's points), found by a search of the accelerator's voxels bounded by the
+ *   best distance so far (a scan of every triangle only for BRUTE_FORCE). Of equally near cells the
+ *   lowest id wins. `inside` is 1 when x projects inside the closest cell. Within a radius means
+ *   strictly closer than it, as vtkCellLocator has it.
+ * - FindCellsWithinBounds: the cells that intersect the closed box (exactly; VTK's own locators
+ *   return every cell of the buckets the box touches, a superset of this).
+ * - FindCell(x, tol2, cell, pcoords, weights): for a surface, the cell nearest x if it lies within
+ *   sqrt(tol2), with the cell's own pcoords and weights at x; -1 otherwise. (vtkCellLocator answers
+ *   only where x also projects inside a cell and lies in its bounding box; where it answers, this
+ *   gives the same cell or an equally near one.)
+ *
+ * Only polygons and strips are located: vertex and line cells are ignored (with a warning), and a
+ * dataset with no polygons is an error. BuildLocator rebuilds when the locator or its dataset was
+ * modified since the last build, unless UseExistingSearchStructure is on and a structure exists
+ * (then the structure, and the geometry it copied, is kept).
  */
 #ifndef vtkTriangleGridLocator_h
 #define vtkTriangleGridLocator_h
@@ -89,6 +105,17 @@ public:
   void FindCellsAlongLine(
     const double p1[3], const double p2[3], double tolerance, vtkIdList* cells) override;
 
+  using vtkAbstractCellLocator::FindCell;
+  using vtkAbstractCellLocator::FindClosestPoint;
+  using vtkAbstractCellLocator::FindClosestPointWithinRadius;
+  void FindClosestPoint(const double x[3], double closestPoint[3], vtkGenericCell* cell,
+    vtkIdType& cellId, int& subId, double& dist2) override;
+  vtkIdType FindClosestPointWithinRadius(double x[3], double radius, double closestPoint[3],
+    vtkGenericCell* cell, vtkIdType& cellId, int& subId, double& dist2, int& inside) override;
+  void FindCellsWithinBounds(double* bbox, vtkIdList* cells) override;
+  vtkIdType FindCell(
+    double x[3], double tol2, vtkGenericCell* cell, double pcoords[3], double* weights) override;
+
   /** Triangles in the search structure (after triangulation, zero-area ones dropped). */
   vtkIdType GetNumberOfTriangles();
   /** Bytes of the search structure and the triangle store. */
@@ -98,6 +125,12 @@ protected:
   vtkTriangleGridLocator();
   ~vtkTriangleGridLocator() override;
   void BuildLocatorInternal();
+  // The engine's nearest point closer than sqrt(maxDist2), in world coordinates.
+  bool Nearest(const double x[3], double maxDist2, double closestPoint[3], vtkIdType& cellId,
+    double& dist2, bool& inside);
+  // Fills `cell` (when given) with cell cellId; for a cell that is not a triangle, subId and inside
+  // come from the cell's own EvaluatePosition at x (a strip's triangle, a polygon's interior).
+  void Finish(const double x[3], vtkIdType cellId, vtkGenericCell* cell, int& subId, bool& inside);
 
   int AcceleratorType = RECURSIVE_GRID;
   int VoxelThreshold = 0;
@@ -110,6 +143,7 @@ private:
   void operator=(const vtkTriangleGridLocator&) = delete;
 
   std::unique_ptr<art::Accelerator> Engine;
+  bool Built = false; // a build was tried (it may have failed: no triangles) since the last free
   double Origin[3] = { 0, 0, 0 }; // the engine's coordinates are taken from here (far scenes)
 };
 
