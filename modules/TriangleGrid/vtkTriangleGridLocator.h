@@ -23,9 +23,10 @@
  * - FindCellsWithinBounds: the cells that intersect the closed box (exactly; VTK's own locators
  *   return every cell of the buckets the box touches, a superset of this).
  * - FindCell(x, tol2, cell, pcoords, weights): for a surface, the cell nearest x if it lies within
- *   sqrt(tol2), with the cell's own pcoords and weights at x; -1 otherwise. (vtkCellLocator answers
- *   only where x also projects inside a cell and lies in its bounding box; where it answers, this
- *   gives the same cell or an equally near one.)
+ *   sqrt(tol2), with the cell's own pcoords and weights at x; -1 otherwise. (VTK 9.1's
+ *   vtkCellLocator ignores tol2 on a surface: it answers wherever x lies in a cell's bounding box and
+ *   projects inside the cell, however far from it. Where its cell lies within tol, this gives the
+ *   same cell or an equally near one.)
  *
  * Only polygons and strips are located: vertex and line cells are ignored (with a warning), and a
  * dataset with no polygons is an error. BuildLocator rebuilds when the locator or its dataset was
