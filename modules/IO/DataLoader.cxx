@@ -1,6 +1,7 @@
 #include "DataLoader.h"
 #include "ArrayChoice.h"
 #include "AtomicFile.h"
+#include "DicomSeries.h"
 #include "Error.h"
 #include "MetaImageCheck.h"
 #include "NrrdCheck.h"
@@ -44,6 +45,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <set>
 
 namespace fs = std::filesystem;
@@ -373,14 +375,22 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   std::error_code ec;
   const std::string e = LowerExtension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
+  std::unique_ptr<DicomLinkFolder> series; // lives until the reader has read
   if (fs::is_directory(path, ec))
   {
     if (!HasDicomFile(path))
     {
       throw Error("folder holds no readable DICOM series", path);
     }
+    // vtkDICOMImageReader reads every series in a folder as one: give it one (DicomSeries.h).
+    int seriesInFolder = 0;
+    const std::vector<std::string> files = DicomSeriesFiles(path, &seriesInFolder);
     auto r = vtkSmartPointer<vtkDICOMImageReader>::New();
-    r->SetDirectoryName(path.c_str());
+    if (seriesInFolder > 1)
+    {
+      series = std::make_unique<DicomLinkFolder>(files);
+    }
+    r->SetDirectoryName(series ? series->Path().c_str() : path.c_str());
     reader = r;
   }
   else if (e == ".mha" || e == ".mhd")

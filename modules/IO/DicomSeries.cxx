@@ -1,0 +1,126 @@
+#include "DicomSeries.h"
+#include "Error.h"
+
+#include <DICOMAppHelper.h>
+#include <DICOMParser.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+
+namespace fs = std::filesystem;
+
+namespace art
+{
+namespace
+{
+struct Image
+{
+  std::string File;
+  int Width = 0, Height = 0;
+};
+} // namespace
+
+std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInFolder)
+{
+  // One parser per file, as vtkDICOMImageReader does, so each image's own size is kept.
+  std::map<std::string, std::vector<Image>> series;
+  std::vector<fs::path> paths;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+  {
+    if (entry.is_regular_file(ec))
+    {
+      paths.push_back(entry.path());
+    }
+  }
+  std::sort(paths.begin(), paths.end());
+  for (const fs::path& p : paths)
+  {
+    DICOMParser parser;
+    DICOMAppHelper helper;
+    if (!parser.OpenFile(p.string()) || !parser.IsDICOMFile())
+    {
+      continue;
+    }
+    helper.RegisterCallbacks(&parser);
+    parser.ReadHeader();
+    dicom_stl::vector<dicom_stl::string> uids;
+    helper.GetSeriesUIDs(uids);
+    series[uids.empty() ? std::string() : uids.front()].push_back({ p.string(), helper.GetWidth(), helper.GetHeight() });
+  }
+  if (seriesInFolder)
+  {
+    *seriesInFolder = static_cast<int>(series.size());
+  }
+  if (series.empty())
+  {
+    return {};
+  }
+  auto most = series.begin();
+  int ties = 0;
+  for (auto it = series.begin(); it != series.end(); ++it)
+  {
+    if (it->second.size() > most->second.size())
+    {
+      most = it;
+      ties = 0;
+    }
+    else if (it != most && it->second.size() == most->second.size())
+    {
+      ++ties;
+    }
+  }
+  if (ties > 0)
+  {
+    throw Error("holds " + std::to_string(series.size()) + " DICOM series, " + std::to_string(ties + 1) + " of them with " +
+        std::to_string(most->second.size()) + " images: put the one to load in a folder of its own",
+      dir);
+  }
+  const std::vector<Image>& chosen = most->second;
+  for (const Image& im : chosen)
+  {
+    if (im.Width != chosen.front().Width || im.Height != chosen.front().Height)
+    {
+      throw Error("images of one DICOM series differ in size: " + fs::path(im.File).filename().string() + " is " +
+          std::to_string(im.Width) + " x " + std::to_string(im.Height) + ", " +
+          fs::path(chosen.front().File).filename().string() + " " + std::to_string(chosen.front().Width) + " x " +
+          std::to_string(chosen.front().Height),
+        dir);
+    }
+  }
+  std::vector<std::string> files;
+  for (const Image& im : chosen)
+  {
+    files.push_back(im.File);
+  }
+  return files;
+}
+
+DicomLinkFolder::DicomLinkFolder(const std::vector<std::string>& files)
+{
+  std::string pattern = (fs::temp_directory_path() / "adaptivert-dicom-XXXXXX").string();
+  if (!mkdtemp(pattern.data()))
+  {
+    throw Error("cannot make a temporary folder for the DICOM series", fs::temp_directory_path().string());
+  }
+  Dir = pattern;
+  for (const std::string& f : files)
+  {
+    std::error_code ec;
+    fs::create_symlink(fs::absolute(f), fs::path(Dir) / fs::path(f).filename(), ec);
+    if (ec)
+    {
+      fs::remove_all(Dir, ec);
+      throw Error("cannot link the DICOM series into a temporary folder: " + ec.message(), f);
+    }
+  }
+}
+
+DicomLinkFolder::~DicomLinkFolder()
+{
+  std::error_code ec;
+  fs::remove_all(Dir, ec);
+}
+} // namespace art

@@ -1,0 +1,60 @@
+#!/usr/bin/python3
+"""Makes two DICOM folders that vtkDICOMImageReader (VTK 9.1) misreads, as PACS exports are:
+dicom-scout/: a 3-slice, 3-row, 4-column CT series (voxel (i, j, k) = 100 k + 10 j + i) beside a
+2-image 5 x 5 scout series (value 7000) whose SeriesInstanceUID sorts first: VTK read the scout's
+series with the CT's size (heap corruption, abort). dicom-mixed-size/: the CT series with its
+middle slice 2 x 2 (read as garbage). Run once; the output is committed."""
+import os
+import shutil
+
+import numpy as np
+import pydicom
+from pydicom.dataset import FileDataset, FileMetaDataset
+from pydicom.uid import ExplicitVRLittleEndian
+
+here = os.path.dirname(os.path.abspath(__file__))
+STUDY = "1.2.826.0.1.3680043.8.498.1"
+
+
+def write(path, series, number, position, rows, cols, pixels, iop=(1, 0, 0, 0, 1, 0)):
+    meta = FileMetaDataset()
+    meta.MediaStorageSOPClassUID = "1.2.840.10008.5.1.4.1.1.2"  # CT Image Storage
+    meta.MediaStorageSOPInstanceUID = series + "." + str(number)
+    meta.TransferSyntaxUID = ExplicitVRLittleEndian
+    ds = FileDataset(None, {}, file_meta=meta, preamble=b"\0" * 128)
+    ds.SOPClassUID = meta.MediaStorageSOPClassUID
+    ds.SOPInstanceUID = meta.MediaStorageSOPInstanceUID
+    ds.StudyInstanceUID, ds.SeriesInstanceUID = STUDY, series
+    ds.Modality = "CT"
+    ds.PatientName = "Test^Series"
+    ds.StudyDate = "20260101"
+    ds.InstanceNumber = number
+    ds.ImagePositionPatient = [float(x) for x in position]
+    ds.ImageOrientationPatient = [float(x) for x in iop]
+    ds.PixelSpacing = [1.0, 1.0]
+    ds.SliceThickness = 1.5
+    ds.Rows, ds.Columns = rows, cols
+    ds.SamplesPerPixel = 1
+    ds.PhotometricInterpretation = "MONOCHROME2"
+    ds.BitsAllocated, ds.BitsStored, ds.HighBit, ds.PixelRepresentation = 16, 16, 15, 1
+    ds.RescaleSlope, ds.RescaleIntercept = 1, 0
+    ds.PixelData = np.asarray(pixels, dtype="<i2").tobytes()
+    ds.is_little_endian, ds.is_implicit_VR = True, False
+    ds.save_as(path, write_like_original=False)
+
+
+def ct(folder, odd=None):
+    for k in range(3):
+        rows, cols = (2, 2) if k == odd else (3, 4)
+        pixels = np.fromfunction(lambda j, i: 100 * k + 10 * j + i, (rows, cols))
+        write(os.path.join(folder, "ct%d.dcm" % k), STUDY + ".3", k + 1, (10, 20, 30 + 1.5 * k), rows, cols, pixels)
+
+
+for name in ("dicom-scout", "dicom-mixed-size"):
+    shutil.rmtree(os.path.join(here, name), ignore_errors=True)
+    os.makedirs(os.path.join(here, name))
+ct(os.path.join(here, "dicom-scout"))
+for n in range(2):  # series UID ".2" sorts before the CT's ".3"
+    write(os.path.join(here, "dicom-scout", "scout%d.dcm" % n), STUDY + ".2", n + 1, (0, 30 + n, 0), 5, 5,
+          np.full((5, 5), 7000), iop=(1, 0, 0, 0, 0, -1))
+ct(os.path.join(here, "dicom-mixed-size"), odd=1)
