@@ -19,7 +19,18 @@ struct Image
 {
   std::string File;
   int Width = 0, Height = 0;
+  std::string Syntax; // transfer syntax UID
 };
+
+// vtkDICOMImageReader reads only uncompressed pixels: implicit or explicit VR, little or big endian.
+bool Uncompressed(std::string uid)
+{
+  while (!uid.empty() && (uid.back() == '\0' || uid.back() == ' '))
+  {
+    uid.pop_back(); // UIDs are padded to an even length
+  }
+  return uid.empty() || uid == "1.2.840.10008.1.2" || uid == "1.2.840.10008.1.2.1" || uid == "1.2.840.10008.1.2.2";
+}
 } // namespace
 
 std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInFolder)
@@ -48,7 +59,8 @@ std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInF
     parser.ReadHeader();
     dicom_stl::vector<dicom_stl::string> uids;
     helper.GetSeriesUIDs(uids);
-    series[uids.empty() ? std::string() : uids.front()].push_back({ p.string(), helper.GetWidth(), helper.GetHeight() });
+    series[uids.empty() ? std::string() : uids.front()].push_back(
+      { p.string(), helper.GetWidth(), helper.GetHeight(), helper.GetTransferSyntaxUID() });
   }
   if (seriesInFolder)
   {
@@ -81,6 +93,13 @@ std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInF
   const std::vector<Image>& chosen = most->second;
   for (const Image& im : chosen)
   {
+    if (!Uncompressed(im.Syntax))
+    {
+      throw Error("holds compressed DICOM images (transfer syntax " + im.Syntax.substr(0, im.Syntax.find('\0')) +
+          " in " + fs::path(im.File).filename().string() +
+          "), which VTK's reader cannot decode: decompress them first (gdcmconv --raw or dcmdjpeg)",
+        dir);
+    }
     if (im.Width != chosen.front().Width || im.Height != chosen.front().Height)
     {
       throw Error("images of one DICOM series differ in size: " + fs::path(im.File).filename().string() + " is " +

@@ -3,24 +3,26 @@
 dicom-scout/: a 3-slice, 3-row, 4-column CT series (voxel (i, j, k) = 100 k + 10 j + i) beside a
 2-image 5 x 5 scout series (value 7000) whose SeriesInstanceUID sorts first: VTK read the scout's
 series with the CT's size (heap corruption, abort). dicom-mixed-size/: the CT series with its
-middle slice 2 x 2 (read as garbage). Run once; the output is committed."""
+middle slice 2 x 2 (read as garbage). dicom-compressed/: JPEG Lossless transfer syntax (VTK cannot
+decode it; its error named neither that nor a way out). Run once; the output is committed."""
 import os
 import shutil
 
 import numpy as np
 import pydicom
 from pydicom.dataset import FileDataset, FileMetaDataset
+from pydicom.encaps import encapsulate
 from pydicom.uid import ExplicitVRLittleEndian
 
 here = os.path.dirname(os.path.abspath(__file__))
 STUDY = "1.2.826.0.1.3680043.8.498.1"
 
 
-def write(path, series, number, position, rows, cols, pixels, iop=(1, 0, 0, 0, 1, 0)):
+def write(path, series, number, position, rows, cols, pixels, iop=(1, 0, 0, 0, 1, 0), syntax=ExplicitVRLittleEndian):
     meta = FileMetaDataset()
     meta.MediaStorageSOPClassUID = "1.2.840.10008.5.1.4.1.1.2"  # CT Image Storage
     meta.MediaStorageSOPInstanceUID = series + "." + str(number)
-    meta.TransferSyntaxUID = ExplicitVRLittleEndian
+    meta.TransferSyntaxUID = syntax
     ds = FileDataset(None, {}, file_meta=meta, preamble=b"\0" * 128)
     ds.SOPClassUID = meta.MediaStorageSOPClassUID
     ds.SOPInstanceUID = meta.MediaStorageSOPInstanceUID
@@ -39,6 +41,9 @@ def write(path, series, number, position, rows, cols, pixels, iop=(1, 0, 0, 0, 1
     ds.BitsAllocated, ds.BitsStored, ds.HighBit, ds.PixelRepresentation = 16, 16, 15, 1
     ds.RescaleSlope, ds.RescaleIntercept = 1, 0
     ds.PixelData = np.asarray(pixels, dtype="<i2").tobytes()
+    if syntax != ExplicitVRLittleEndian:  # a JPEG frame's start, enough for the header to say so
+        ds.PixelData = encapsulate([b"\xff\xd8\xff\xc3" + bytes(60)])
+        ds["PixelData"].is_undefined_length = True
     ds.is_little_endian, ds.is_implicit_VR = True, False
     ds.save_as(path, write_like_original=False)
 
@@ -50,7 +55,7 @@ def ct(folder, odd=None):
         write(os.path.join(folder, "ct%d.dcm" % k), STUDY + ".3", k + 1, (10, 20, 30 + 1.5 * k), rows, cols, pixels)
 
 
-for name in ("dicom-scout", "dicom-mixed-size"):
+for name in ("dicom-scout", "dicom-mixed-size", "dicom-compressed"):
     shutil.rmtree(os.path.join(here, name), ignore_errors=True)
     os.makedirs(os.path.join(here, name))
 ct(os.path.join(here, "dicom-scout"))
@@ -58,3 +63,6 @@ for n in range(2):  # series UID ".2" sorts before the CT's ".3"
     write(os.path.join(here, "dicom-scout", "scout%d.dcm" % n), STUDY + ".2", n + 1, (0, 30 + n, 0), 5, 5,
           np.full((5, 5), 7000), iop=(1, 0, 0, 0, 0, -1))
 ct(os.path.join(here, "dicom-mixed-size"), odd=1)
+for k in range(2):
+    write(os.path.join(here, "dicom-compressed", "jpeg%d.dcm" % k), STUDY + ".4", k + 1, (0, 0, 1.5 * k), 8, 8,
+          np.zeros((8, 8)), syntax="1.2.840.10008.1.2.4.70")
