@@ -189,7 +189,7 @@ struct TetRayCaster::Impl
     int px, int py, std::vector<Entry>& out, int& hint, Counters& c)
   {
     const bool convex = rc.M.IsConvex();
-    if (convex || !rc.Boundary)
+    if (convex || !rc.Boundary || !rc.S.boundaryGrid)
     {
       f.Find(w, r, px, py, !convex, out, hint, c);
       return;
@@ -299,17 +299,10 @@ struct TetRayCaster::Impl
 };
 
 TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
-  : M(mesh), S(std::move(settings))
+  : M(mesh)
 {
-  if (S.tf.Nodes().empty())
-  {
-    const Vec3 e = M.Bounds().hi - M.Bounds().lo;
-    const double extent[3] = { e.x, e.y, e.z };
-    const double lo = M.ScalarRange(0), hi = M.ScalarRange(1);
-    S.tf = TransferFunction::Preset("grey-ramp", lo, hi,
-      TransferFunction::PresetUnitDistance(lo, hi, MeanSpacing(extent, double(M.NumberOfPoints()))));
-  }
-  if (!M.IsConvex() && S.boundaryGrid)
+  SetSettings(std::move(settings));
+  if (!M.IsConvex())
   {
     std::vector<std::array<long long, 3>> tris;
     tris.reserve(M.BoundaryFaces().size());
@@ -327,6 +320,19 @@ TetRayCaster::TetRayCaster(const TetMesh& mesh, RenderSettings settings)
 }
 
 TetRayCaster::~TetRayCaster() = default;
+
+void TetRayCaster::SetSettings(RenderSettings settings)
+{
+  S = std::move(settings);
+  if (S.tf.Nodes().empty())
+  {
+    const Vec3 e = M.Bounds().hi - M.Bounds().lo;
+    const double extent[3] = { e.x, e.y, e.z };
+    const double lo = M.ScalarRange(0), hi = M.ScalarRange(1);
+    S.tf = TransferFunction::Preset("grey-ramp", lo, hi,
+      TransferFunction::PresetUnitDistance(lo, hi, MeanSpacing(extent, double(M.NumberOfPoints()))));
+  }
+}
 
 RenderStats TetRayCaster::Render(const Camera& cam, Image& img, Progress* progress, const std::vector<double>* ends) const
 {

@@ -91,6 +91,9 @@ public:
   /// The ray's tmax ends it, as `ends` does in Render.
   RayResult Cast(const Ray& r) const;
 
+  /// New settings for the next Render (transfer function, iso-surfaces, ...), keeping what was
+  /// built for the mesh (the boundary grid of a non-convex mesh).
+  void SetSettings(RenderSettings settings);
   const RenderSettings& Settings() const { return S; }
   const TetMesh& Mesh() const { return M; }
 

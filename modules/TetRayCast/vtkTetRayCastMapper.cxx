@@ -24,6 +24,7 @@
 #include <vtkVolumeProperty.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -87,6 +88,7 @@ std::vector<double> RayEndsFromDepth(
 struct vtkTetRayCastMapper::Internals
 {
   std::unique_ptr<art::TetMesh> Mesh;
+  std::unique_ptr<art::TetRayCaster> Caster; ///< kept with the mesh: a non-convex one's boundary grid
   vtkMTimeType MeshTime = 0;
   vtkDataSet* MeshInput = nullptr;
   std::string MeshArray;
@@ -169,7 +171,9 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     try
     {
       std::string note;
+      this->Impl->Caster.reset();
       this->Impl->Mesh = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(grid, array, &note));
+      this->Impl->Caster = std::make_unique<art::TetRayCaster>(*this->Impl->Mesh, art::RenderSettings{});
       if (!note.empty())
       {
         vtkWarningMacro(<< note);
@@ -177,6 +181,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
     catch (const art::Error& e)
     {
+      this->Impl->Caster.reset();
       this->Impl->Mesh.reset();
       vtkErrorMacro(<< e.what());
       return;
@@ -185,6 +190,8 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->Impl->MeshTime = input->GetMTime();
     this->Impl->MeshArray = array;
   }
+  // A frame's time, for AutoAdjustSampleDistances, leaves out (re)building the mesh.
+  const auto frameStart = std::chrono::steady_clock::now();
   art::RenderSettings s;
   try
   {
@@ -201,6 +208,15 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                                                       : art::RenderSettings::Mode::Composite;
   s.isos = this->Impl->Isos;
 
+  const double allocated = vol->GetAllocatedRenderTime();
+  if (this->AutoAdjustSampleDistances && this->LastFrameSeconds > 0 && allocated > 0)
+  {
+    // A frame's time goes with the number of rays, 1 / distance^2.
+    const double lo = this->MinimumImageSampleDistance,
+                 hi = std::max(this->MinimumImageSampleDistance, this->MaximumImageSampleDistance);
+    this->ImageSampleDistance = static_cast<float>(std::min(hi,
+      std::max(lo, this->ImageSampleDistance * std::sqrt(this->LastFrameSeconds / allocated))));
+  }
   int* size = ren->GetSize();
   const int vw = std::max(1, size[0]), vh = std::max(1, size[1]);
   const int w = std::max(1, static_cast<int>(vw / this->ImageSampleDistance + 0.5));
@@ -249,8 +265,8 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     ends = RayEndsFromDepth(ren, vw, vh, cam, toData);
   }
   art::Image img;
-  const art::RenderStats st =
-    art::TetRayCaster(*this->Impl->Mesh, s).Render(cam, img, nullptr, ends.empty() ? nullptr : &ends);
+  this->Impl->Caster->SetSettings(std::move(s));
+  const art::RenderStats st = this->Impl->Caster->Render(cam, img, nullptr, ends.empty() ? nullptr : &ends);
   this->LastRenderTime = st.seconds;
   this->LastTetsCrossed = static_cast<double>(st.counters.tetsCrossed);
 
@@ -295,12 +311,15 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   int mem[2] = { w, h }, view[2] = { vw, vh }, use[2] = { w, h }, origin[2] = { 0, 0 };
   this->Impl->Helper->SetPreMultipliedColors(1);
   this->Impl->Helper->RenderTexture(vol, ren, mem, view, use, origin, static_cast<float>(minZ), bytes.data());
+  this->LastFrameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
 }
 
 void vtkTetRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
+  os << indent << "AutoAdjustSampleDistances: " << this->AutoAdjustSampleDistances << " (from "
+     << this->MinimumImageSampleDistance << " to " << this->MaximumImageSampleDistance << ")\n";
   os << indent << "EarlyRayTermination: " << this->EarlyRayTermination << "\n";
   os << indent << "TrapezoidRule: " << this->TrapezoidRule << "\n";
   os << indent << "IntermixIntersectingGeometry: " << this->IntermixIntersectingGeometry << "\n";

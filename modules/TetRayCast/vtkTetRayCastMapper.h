@@ -36,6 +36,23 @@ public:
   ///@}
 
   ///@{
+  /**
+   * With AutoAdjustSampleDistances on (the default, as in VTK's own ray cast mappers), each frame
+   * sets ImageSampleDistance, between the minimum (default 1) and the maximum (default 4), from
+   * the last frame's time and the time the renderer allocates to this volume (its window's
+   * desired update rate): coarse while an interactor moves the camera, one ray a pixel when still.
+   * Turn it off to set ImageSampleDistance yourself.
+   */
+  vtkSetClampMacro(AutoAdjustSampleDistances, vtkTypeBool, 0, 1);
+  vtkGetMacro(AutoAdjustSampleDistances, vtkTypeBool);
+  vtkBooleanMacro(AutoAdjustSampleDistances, vtkTypeBool);
+  vtkSetClampMacro(MinimumImageSampleDistance, float, 0.1f, 32.0f);
+  vtkGetMacro(MinimumImageSampleDistance, float);
+  vtkSetClampMacro(MaximumImageSampleDistance, float, 0.1f, 32.0f);
+  vtkGetMacro(MaximumImageSampleDistance, float);
+  ///@}
+
+  ///@{
   /** Early ray termination: a ray stops once its opacity reaches this (default 0.99; 1 = off). */
   vtkSetClampMacro(EarlyRayTermination, double, 0.01, 1.0);
   vtkGetMacro(EarlyRayTermination, double);
@@ -79,6 +96,10 @@ protected:
   ~vtkTetRayCastMapper() override;
 
   float ImageSampleDistance = 1.0f;
+  vtkTypeBool AutoAdjustSampleDistances = 1;
+  float MinimumImageSampleDistance = 1.0f;
+  float MaximumImageSampleDistance = 4.0f;
+  double LastFrameSeconds = 0.0; ///< the whole last Render call, for AutoAdjustSampleDistances
   double EarlyRayTermination = 0.99;
   vtkTypeBool TrapezoidRule = 0;
   vtkTypeBool IntermixIntersectingGeometry = 1;

@@ -126,6 +126,13 @@ print(f"rotated and scaled volume and camera: max difference {np.abs(turned - en
 assert np.abs(turned - engine).max() < 1e-4
 place((0, 0, 0), (0, 0, 0), 1, lambda p: p, up0)
 
+# Editing the transfer function between frames changes the next image; undoing it gives the
+# first image back (the mapper keeps its mesh and caster and only takes the new settings).
+otf.AddPoint(160, 0.5)
+assert np.abs(engine_image() - engine).max() > 0.1, "a new opacity did not change the image"
+otf.AddPoint(160, 0.1)
+assert np.abs(engine_image() - engine).max() < 1e-6, "the old opacity did not give the old image"
+
 # SelectScalarArray with a field scalar mode picks another point array, as VTK's mappers do: a
 # copy of the scalars with its values mirrored about the range changes the image, and selecting
 # the original array by name gives the first image back.
@@ -143,7 +150,26 @@ mapper.SelectScalarArray(rt.GetName())
 assert np.abs(engine_image() - engine).max() < 1e-6, "selecting the original array by name"
 mapper.SetScalarModeToDefault()
 
-# Half the rays per axis with ImageSampleDistance 2; iso-surfaces add shaded surfaces.
+# A still frame (the window's default desired update rate allots it hours) keeps one ray a pixel.
+assert mapper.GetAutoAdjustSampleDistances() == 1
+assert mapper.GetLastImage().GetDimensions()[:2] == (96, 80)
+# Frames the window wants 100,000 times a second get the maximum distance, 4 pixels a ray, and a
+# still frame after them one ray a pixel again. (Only these extremes: between them the distance
+# follows the machine's speed.)
+win.SetDesiredUpdateRate(1e5)
+for _ in range(2):
+    win.Render()
+print(f"at 1e5 frames/s wanted: ImageSampleDistance {mapper.GetImageSampleDistance():.2f}, "
+      f"image {mapper.GetLastImage().GetDimensions()[:2]}")
+assert mapper.GetImageSampleDistance() == 4.0
+assert mapper.GetLastImage().GetDimensions()[:2] == (24, 20)
+win.SetDesiredUpdateRate(0.0001)
+win.Render()
+assert mapper.GetImageSampleDistance() == 1.0
+
+# Half the rays per axis with ImageSampleDistance 2 (set by hand: auto-adjustment off);
+# iso-surfaces add shaded surfaces.
+mapper.AutoAdjustSampleDistancesOff()
 mapper.SetImageSampleDistance(2)
 mapper.AddIsoSurface(200, 1, 1, 1, 1.0)
 win.Render()
