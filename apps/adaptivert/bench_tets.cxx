@@ -291,6 +291,7 @@ int Run(const cli::Options& o)
       // Ours the same way, mapper against mapper: window draw and read-back included.
       vtkNew<vtkTetRayCastMapper> mapper;
       mapper->SetInputData(grid);
+      mapper->SetAutoAdjustSampleDistances(0); // one ray a pixel, as Bunyk's
       Row q{ "ours mapper in a window", me.name, static_cast<long long>(m.NumberOfTets()),
         static_cast<long long>(m.NumberOfPoints()) };
       q.seconds = RenderVTK(mapper, prop, cam, W, H, runs, img);
