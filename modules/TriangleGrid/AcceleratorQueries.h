@@ -189,6 +189,14 @@ public:
         {
           continue;
         }
+        // The triangle's box first: a lower bound that is cheap (most triangles of a far voxel
+        // end here); the float box is within `slack` of the double triangle, as prune2 allows.
+        const TriangleBox& tb = S->RecordBox(id);
+        const double blo[3] = { tb.lo[0], tb.lo[1], tb.lo[2] }, bhi[3] = { tb.hi[0], tb.hi[1], tb.hi[2] };
+        if (BoxDistance2(blo, bhi, x) > prune2)
+        {
+          continue;
+        }
         ++c.trianglesTested;
         const TriangleRecord& t = rec[id];
         Vec3 q;

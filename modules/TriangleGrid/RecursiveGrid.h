@@ -215,7 +215,7 @@ protected:
     cell(ci[0], ci[1], ci[2]);
     for (int r = 1; r <= maxR; ++r)
     {
-      double face2[3][2];
+      double face2[3][2], gap2[3][2];
       double ring2 = std::numeric_limits<double>::infinity();
       for (int a = 0; a < 3; ++a)
       {
@@ -228,7 +228,8 @@ protected:
             continue;
           }
           const double gap = std::max(0.0, s ? G.lo[a] + idx * G.cs[a] - x[a] : x[a] - (G.lo[a] + (idx + 1) * G.cs[a]));
-          face2[a][s] = gap * gap + out2[(a + 1) % 3] + out2[(a + 2) % 3];
+          gap2[a][s] = gap * gap;
+          face2[a][s] = gap2[a][s] + out2[(a + 1) % 3] + out2[(a + 2) % 3];
           ring2 = std::min(ring2, face2[a][s]);
         }
       }
@@ -248,7 +249,6 @@ protected:
             continue;
           }
           int lo[3], hi[3];
-          const double reach = std::sqrt(prune2);
           for (int b = 0; b < 3; ++b)
           {
             if (b == a)
@@ -259,9 +259,11 @@ protected:
             const int in = b < a ? 1 : 0;
             lo[b] = std::max(ci[b] - r + in, 0);
             hi[b] = std::min(ci[b] + r - in, G.n[b] - 1);
+            // Along b a cell can hold something nearer only within this reach of x: the face's own
+            // distance along a and x's distance outside the grid along the third axis are spent.
+            const double reach = std::sqrt(std::max(0.0, prune2 - gap2[a][s] - out2[3 - a - b]));
             if (reach < std::numeric_limits<double>::infinity())
             {
-              // Cells whose slab along b lies beyond the reach cannot hold anything nearer.
               const double l = std::floor((x[b] - reach - G.lo[b]) * G.invCs[b]);
               const double h = std::floor((x[b] + reach - G.lo[b]) * G.invCs[b]);
               lo[b] = l > lo[b] ? static_cast<int>(std::min(l, double(G.n[b]))) : lo[b];
