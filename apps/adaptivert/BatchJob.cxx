@@ -43,6 +43,19 @@ std::vector<std::string> OptionsToArgs(const json& s, std::string& text, const s
   std::vector<std::string> args;
   for (const auto& [key, value] : s.items())
   {
+    // The batch gives every frame its own file, size and camera, and reads render's --json:
+    // {"output": "x.png"} overwrote x.png beside the job, {"help": true} left no image yet
+    // counted the frame as rendered.
+    static const std::set<std::string> own = { "output", "o", "help", "h", "json", "quiet", "q" };
+    static const std::set<std::string> job = { "size", "s", "azimuth", "elevation", "zoom" };
+    if (own.count(key))
+    {
+      throw art::Error("setting '" + key + "' is the batch's own: it sets it for every frame", file);
+    }
+    if (job.count(key))
+    {
+      throw art::Error("setting '" + key + "' belongs in the job's \"size\" or \"cameras\", not in a setting", file);
+    }
     if (kind && !cli::OptionAppliesTo(key, *kind))
     {
       continue;

@@ -96,6 +96,13 @@ json RunTask(const cli::BatchJob& job, const cli::BatchTask& t)
     res["error"] = first.empty() ? "render exited with code " + std::to_string(r.exitCode) : first;
     return res;
   }
+  std::error_code ec;
+  if (!std::filesystem::exists(image, ec))
+  {
+    res["status"] = "failed";
+    res["error"] = "render wrote no image";
+    return res;
+  }
   const json out = LastJsonLine(r.out);
   res["status"] = "ok";
   res["render"] = out;
