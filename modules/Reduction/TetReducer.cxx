@@ -228,6 +228,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   };
   std::vector<double> priority;
   const bool edgeSplit = Opt.Refine == ReducerOptions::Refinement::EdgeSplit;
+  const double growth = Opt.RefineFraction > 0 ? Opt.RefineFraction : edgeSplit ? 0.2 : 0.5;
   std::vector<EdgeSplitMoments> edgeMoments;
   for (int level = 0;; ++level)
   {
@@ -290,7 +291,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     }
     const long long goal = bi < budgets.size() ? std::min(cap, budgets[bi]) : cap;
     const long long next = std::min(goal,
-      std::max(nt + 1, static_cast<long long>(std::ceil(nt * (1.0 + Opt.RefineFraction)))));
+      std::max(nt + 1, static_cast<long long>(std::ceil(nt * (1.0 + growth)))));
 
     std::vector<int> cand;
     const double minEdge2 = Opt.MinEdgeVoxels * Opt.MinEdgeVoxels;

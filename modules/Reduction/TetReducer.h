@@ -9,12 +9,14 @@
 // and the old fit is exactly representable on the refined mesh, so the warm start is exact.
 // Measured (adaptivert bench reduction, CT head, paper's levels 0.01%..1%): RMS error 0.75-0.83 x
 // uniform downsampling at equal vertices on the full 256x256x108 CT (0.81-0.89 x on the 128
-// default), and 0.30-0.58 x VTK's quadric decimation, which stalls above small targets and
-// leaves a third or more of the voxel centres uncovered; over the voxels it does cover its RMS
-// is lower than ours over all, a hint that its anisotropic tets suit CT edges better than
-// isotropic bisection. TetGen/CGAL sizing-field refinement was not built: no exact nesting.
-// RefineFraction 0.05-0.5, MinEdgeVoxels 1-3, Regularization 0.05-3, the coarse mesh size and a
-// bisection-gain priority move these ratios by at most a few percent (reduction_results/README.md).
+// default). VTK's quadric decimation leaves a third or more of the voxel centres uncovered; on
+// those it covers, at its own tet count, ours is 1.33-1.57 x its RMS: its freely placed,
+// anisotropic tets suit CT edges better than isotropic bisection. TetGen/CGAL sizing-field
+// refinement was not built: no exact nesting. RefineFraction 0.05-0.5, MinEdgeVoxels 1-3,
+// Regularization 0.05-3, the coarse mesh size and a bisection-gain priority move these ratios by
+// at most a few percent (reduction_results/README.md); bisection grows by half a level (fewer
+// voxel passes: full CT to 200k tets 7.0 -> 3.1 s plain, 35 -> 23 s opacity-weighted, RMS +0.7%),
+// edge splits by a fifth (by half, their RMS at 200k tets rose 18%).
 // Option Refinement::EdgeSplit splits, best first, the edges whose split (star and all, at the
 // midpoint or a quarter point) removes the most squared error per added tet: still nested,
 // conforming and exact on the lattice, and anisotropic. Full CT: RMS 0.90-0.96 x bisection's at
@@ -58,7 +60,7 @@ struct ReducerOptions
   Metric ErrorMetric = Metric::RMS;
   bool ErrorRelative = false;    ///< TargetError is a fraction of the scalar range
   std::vector<long long> Levels; ///< more budgets (tets) emitted on the way, nested
-  double RefineFraction = 0.2;   ///< tet count growth per refinement level
+  double RefineFraction = 0;     ///< tet count growth per level; 0: 0.5 bisection, 0.2 edge splits
   double SolverTolerance = 1e-8; ///< CG stops at ||r|| <= tol ||b||
   double Regularization = 0.5;   ///< smoothness weight on tets holding fewer than 8 voxel centres
   double MinEdgeVoxels = 2.0;    ///< a refinement edge shorter than this (in voxels) is never cut

@@ -68,9 +68,10 @@ public:
   vtkBooleanMacro(ErrorRelative, bool);
 
   /**
-   * Growth of the tet count per refinement level (0.2: 20% more tets per re-fit).
+   * Growth of the tet count per refinement level (0.2: 20% more tets per re-fit). 0 (the
+   * default): 0.5 with bisection, 0.2 with edge splits.
    */
-  vtkSetClampMacro(RefineFraction, double, 0.01, 4.0);
+  vtkSetClampMacro(RefineFraction, double, 0.0, 4.0);
   vtkGetMacro(RefineFraction, double);
 
   /**
@@ -148,7 +149,7 @@ protected:
   double TargetError = -1.0;
   int ErrorMetric = RMS;
   bool ErrorRelative = false;
-  double RefineFraction = 0.2;
+  double RefineFraction = 0.0;
   double SolverTolerance = 1e-8;
   int Refinement = BISECTION;
   std::vector<vtkIdType> Levels;
