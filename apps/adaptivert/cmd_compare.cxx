@@ -47,6 +47,8 @@ int Run(const cli::Options& o)
     }
   }
   const art::Image a = art::ReadImage(pa), b = art::ReadImage(pb);
+  art::RequireFinite(a, pa);
+  art::RequireFinite(b, pb);
   if (a.Width() != b.Width() || a.Height() != b.Height())
   {
     throw art::Error("size " + std::to_string(b.Width()) + "x" + std::to_string(b.Height()) +

@@ -19,6 +19,8 @@ void CheckSameSize(const Image& a, const Image& b)
       std::to_string(a.Height()) + " vs " + std::to_string(b.Width()) + "x" +
       std::to_string(b.Height()));
   }
+  RequireFinite(a, "the first image");
+  RequireFinite(b, "the second image");
 }
 
 // Separable Gaussian filter with the image edge clamped.
@@ -80,6 +82,27 @@ double ChannelSSIM(const Image& a, const Image& b, int c, const std::vector<doub
   return sum / double(n);
 }
 } // namespace
+
+void RequireFinite(const Image& img, const std::string& file)
+{
+  const auto& p = img.Pixels();
+  std::size_t bad = 0, first = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+  {
+    if (!std::isfinite(p[i]))
+    {
+      first = bad++ ? first : i;
+    }
+  }
+  if (bad)
+  {
+    const std::size_t pixel = first / 4;
+    throw Error("holds " + std::to_string(bad) + " NaN or infinite channel values, the first at pixel (" +
+        std::to_string(pixel % std::size_t(img.Width())) + ", " + std::to_string(pixel / std::size_t(img.Width())) +
+        "): no error figure can be computed",
+      file);
+  }
+}
 
 double RMSE(const Image& a, const Image& b)
 {

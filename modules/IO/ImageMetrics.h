@@ -7,6 +7,8 @@
 #include "AdaptiveRTIOModule.h"
 #include "Image.h"
 
+#include <string>
+
 namespace art
 {
 struct ImageMetricsResult
@@ -17,7 +19,11 @@ struct ImageMetricsResult
   double maxAbs = 0.0; ///< largest absolute channel difference
 };
 
-/// Throws art::Error when the sizes differ.
+/// Throws art::Error naming `file` when a channel value is NaN or infinite (a float EXR or TIFF
+/// can hold them): RMSE would be NaN, and PSNR, read as "rmse > 0", infinite, "identical".
+ADAPTIVERTIO_EXPORT void RequireFinite(const Image& img, const std::string& file = {});
+
+/// Throws art::Error when the sizes differ or a value is not finite.
 ADAPTIVERTIO_EXPORT double RMSE(const Image& a, const Image& b);
 ADAPTIVERTIO_EXPORT double PSNR(const Image& a, const Image& b);
 ADAPTIVERTIO_EXPORT double SSIM(const Image& a, const Image& b);

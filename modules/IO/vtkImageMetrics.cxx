@@ -45,6 +45,8 @@ bool vtkImageMetrics::CompareFiles(const char* fileA, const char* fileB)
     // Read in order, so an error names the first bad file.
     const art::Image a = art::ReadImage(fileA ? fileA : "");
     const art::Image b = art::ReadImage(fileB ? fileB : "");
+    art::RequireFinite(a, fileA);
+    art::RequireFinite(b, fileB);
     Store(art::CompareImages(a, b), this->RMSE, this->PSNR, this->SSIM, this->MaxAbsDifference);
     this->ErrorMessage.clear();
     return true;

@@ -84,3 +84,33 @@ TEST(ImageMetrics, DifferenceImage)
   EXPECT_FLOAT_EQ(d.Pixel(1, 0)[2], 0.5f);
   EXPECT_FLOAT_EQ(d.Pixel(1, 0)[3], 1.0f);
 }
+
+// A float EXR or TIFF may hold NaN or infinity: RMSE was NaN and PSNR, read as "rmse > 0",
+// infinite, so `compare --min-psnr` passed and the figures said "identical". Now an error that
+// names the image and the first pixel.
+TEST(ImageMetrics, NonFiniteValuesAreAnError)
+{
+  for (const float bad : { std::nanf(""), INFINITY })
+  {
+    Image a(8, 6, { 0.5f, 0.5f, 0.5f, 1.f });
+    const Image b = a;
+    a.Pixels()[4 * (3 * 8 + 5) + 1] = bad; // pixel (5, 3), green
+    a.Pixels()[4 * (4 * 8 + 1)] = bad;
+    for (const bool first : { true, false })
+    {
+      try
+      {
+        first ? art::CompareImages(a, b) : art::CompareImages(b, a);
+        ADD_FAILURE() << "compared an image holding " << bad;
+      }
+      catch (const art::Error& e)
+      {
+        const std::string m = e.what();
+        EXPECT_NE(m.find(first ? "the first image" : "the second image"), std::string::npos) << m;
+        EXPECT_NE(m.find("holds 2 NaN or infinite channel values, the first at pixel (5, 3)"), std::string::npos) << m;
+      }
+    }
+    EXPECT_THROW(art::PSNR(a, b), art::Error);
+    EXPECT_THROW(art::SSIM(a, b), art::Error);
+  }
+}
