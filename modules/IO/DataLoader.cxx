@@ -498,7 +498,12 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   }
   if (pd->GetNumberOfPoints() == 0 || pd->GetNumberOfPolys() + pd->GetNumberOfStrips() == 0)
   {
-    throw Error("holds no polygons (empty or unreadable surface)", path);
+    // A readable file of lines or points only ("empty or unreadable" sent users looking for damage).
+    const vtkIdType lines = pd->GetNumberOfLines(), verts = pd->GetNumberOfVerts();
+    throw Error(lines + verts > 0 ? "holds no polygons, only " + std::to_string(lines) + " lines and " +
+          std::to_string(verts) + " vertices (surfaces are drawn from polygons and triangle strips)"
+                                  : std::string("holds no polygons (empty or unreadable surface)"),
+      path);
   }
   CheckPolyIndices(pd, path);
   return pd;
