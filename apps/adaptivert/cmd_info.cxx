@@ -49,6 +49,23 @@ void Out(std::string& text, const char* fmt, ...)
   text += buf;
 }
 
+// "lo SEP hi" with the fewest digits (at least six) that tell them apart: 1000 + 1e-9 variations
+// printed as "1000 .. 1000".
+std::string Range(double lo, double hi, const char* sep)
+{
+  char a[40], b[40];
+  for (int digits = 6; digits <= 17; ++digits)
+  {
+    std::snprintf(a, sizeof a, "%.*g", digits, lo);
+    std::snprintf(b, sizeof b, "%.*g", digits, hi);
+    if (lo == hi || std::string(a) != b)
+    {
+      break;
+    }
+  }
+  return std::string(a) + sep + b;
+}
+
 std::string Bounds(vtkDataSet* ds)
 {
   double b[6];
@@ -70,9 +87,9 @@ std::string ArrayList(vtkFieldData* fd)
     {
       double r[2];
       da->GetRange(r, -1);
-      char b[80];
-      std::snprintf(b, sizeof b, " [%s x%d, %g..%g]", da->GetDataTypeAsString(),
-        da->GetNumberOfComponents(), r[0], r[1]);
+      char b[160];
+      std::snprintf(b, sizeof b, " [%s x%d, %s]", da->GetDataTypeAsString(), da->GetNumberOfComponents(),
+        Range(r[0], r[1], "..").c_str());
       s += b;
     }
   }
@@ -149,8 +166,8 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
     }
     Out(text, "  bounds       %s\n", Bounds(img).c_str());
     Orientation(path, img, text, j);
-    Out(text, "  scalars      %s, %d component%s, range %g .. %g\n", s->GetDataTypeAsString(),
-      s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "", r[0], r[1]);
+    Out(text, "  scalars      %s, %d component%s, range %s\n", s->GetDataTypeAsString(),
+      s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "", Range(r[0], r[1], " .. ").c_str());
     if (img->GetPointData()->GetNumberOfArrays() > 1)
     {
       Out(text, "  point data   %s (--array picks one)\n", ArrayList(img->GetPointData()).c_str());
