@@ -4,6 +4,7 @@
 #include "DicomSeries.h"
 #include "Error.h"
 #include "MetaImageCheck.h"
+#include "NiftiCheck.h"
 #include "NrrdCheck.h"
 #include "ObjReader.h"
 #include "PlyCheck.h"
@@ -46,6 +47,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <new>
 #include <set>
 
 namespace fs = std::filesystem;
@@ -122,7 +124,14 @@ void RequireFile(const std::string& path, bool allowDirectory)
 void RunReader(vtkAlgorithm* reader, const std::string& path)
 {
   ErrorCatcher catcher(reader);
-  reader->Update();
+  try
+  {
+    reader->Update();
+  }
+  catch (const std::bad_alloc&)
+  {
+    throw Error("out of memory while reading it (are the header's sizes right?)", path);
+  }
   if (!catcher.Message.empty())
   {
     throw Error("cannot read: " + catcher.Message, path);
@@ -400,6 +409,7 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   }
   else if (e == ".nii" || e == ".nii.gz")
   {
+    CheckNifti(path);
     reader = FileReader<vtkNIFTIImageReader>(path);
   }
   else if (e == ".vti")
