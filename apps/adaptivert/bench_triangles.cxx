@@ -1,7 +1,9 @@
 // `adaptivert bench triangles`: the TriangleGrid accelerators against Embree 3 (rtcIntersect1,
 // rtcOccluded1, all hits through an intersection filter) and VTK 9.1's vtkStaticCellLocator,
 // vtkModifiedBSPTree and vtkOBBTree, on the same primary and shadow rays; plus the paper's
-// parameter tables (Dmitriev: R[thr,N] and O[thr,w]). Writes JSON, a markdown table and a chart.
+// parameter tables (Dmitriev: R[thr,N] and O[thr,w]); and FindClosestPoint through
+// vtkTriangleGridLocator against vtkStaticCellLocator and vtkCellLocator on the same points, with
+// the distance error against brute force. Writes JSON, a markdown table and a chart.
 #ifdef ART_HAVE_TriangleGrid
 #include "Accelerator.h"
 #include "Bench.h"
@@ -13,7 +15,10 @@
 #include "Json.h"
 #include "ParallelTiles.h"
 
+#include "vtkTriangleGridLocator.h"
+
 #include <vtkCamera.h>
+#include <vtkCellLocator.h>
 #include <vtkGenericCell.h>
 #ifdef ART_HAVE_VTK_FLOWPATHS
 #include <vtkModifiedBSPTree.h>
@@ -35,6 +40,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <random>
 #include <sstream>
 #include <thread>
 
@@ -512,6 +518,156 @@ Engine VTKEngine(Locator* loc, double far)
   return e;
 }
 
+// ---- Closest point: FindClosestPoint of every cell locator on the same query points ----
+
+/// One locator's closest-point figures on one scene.
+struct PointRow
+{
+  std::string scene, engine;
+  double buildMs = 0;
+  cli::BenchStats rate; // queries/s
+  size_t points = 0;    // points timed
+  double maxRelError = -1; // max |d - d_brute| / d_brute over the reference points
+  size_t sameCell = 0, refPoints = 0;
+  std::string note;
+};
+
+// Query points as the tests draw them: a third uniform in the (slightly grown) box, a third near the
+// surface (a random point of a random triangle moved up to 1% of the diagonal), a third 1-10
+// diagonals away.
+std::vector<art::Vec3> QueryPoints(const art::TriangleStore& st, size_t n)
+{
+  std::mt19937_64 g(17);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> nd;
+  const art::Box3 b = st.Bounds();
+  const double diag = b.Diagonal();
+  std::vector<art::Vec3> xs(n);
+  for (size_t i = 0; i < n; ++i)
+  {
+    art::Vec3 d(nd(g), nd(g), nd(g));
+    d = d * (1.0 / (art::Length(d) + 1e-300));
+    if (i % 3 == 0)
+    {
+      const art::Vec3 pad = b.Size() * 0.05;
+      for (int a = 0; a < 3; ++a)
+      {
+        xs[i][a] = b.lo[a] - pad[a] + u(g) * (b.hi[a] - b.lo[a] + 2 * pad[a]);
+      }
+    }
+    else if (i % 3 == 1)
+    {
+      const size_t t = static_cast<size_t>(u(g) * double(st.Size())) % st.Size();
+      double w1 = u(g), w2 = u(g);
+      if (w1 + w2 > 1)
+      {
+        w1 = 1 - w1, w2 = 1 - w2;
+      }
+      const art::TriangleRecord& r = st.Record(t);
+      const auto& P = st.Points();
+      xs[i] = P[r.v[0]] + (P[r.v[1]] - P[r.v[0]]) * w1 + (P[r.v[2]] - P[r.v[0]]) * w2 + d * (0.01 * diag * u(g));
+    }
+    else
+    {
+      xs[i] = b.Center() + d * (diag * (1 + 9 * u(g)));
+    }
+  }
+  return xs;
+}
+
+struct PointAnswer
+{
+  double d2 = -1;
+  vtkIdType cell = -1;
+};
+
+// FindClosestPoint of `loc` on xs[0], xs[stride], ... (one thread: VTK's locators are timed that way).
+void RunPoints(vtkAbstractCellLocator* loc, const std::vector<art::Vec3>& xs, size_t stride, std::vector<PointAnswer>* out)
+{
+  vtkNew<vtkGenericCell> cell;
+  if (out)
+  {
+    out->clear();
+  }
+  for (size_t i = 0; i < xs.size(); i += stride)
+  {
+    const double x[3] = { xs[i].x, xs[i].y, xs[i].z };
+    double cp[3], d2;
+    vtkIdType id;
+    int sub;
+    loc->FindClosestPoint(x, cp, cell, id, sub, d2);
+    if (out)
+    {
+      out->push_back({ d2, id });
+    }
+  }
+}
+
+void BenchClosestPoint(const Scene& s, size_t nPoints, int runs, std::vector<PointRow>& rows)
+{
+  const std::vector<art::Vec3> xs = QueryPoints(*s.store, nPoints);
+  // The reference: our brute force (every triangle, exact in double) on a strided subset.
+  const size_t refStride = std::max<size_t>(1, xs.size() / std::max<size_t>(1, std::min<size_t>(xs.size(),
+                                                  s.store->Size() > 20000 ? 1000 : 5000)));
+  std::vector<PointAnswer> ref;
+  {
+    vtkNew<vtkTriangleGridLocator> brute;
+    brute->SetAcceleratorType(vtkTriangleGridLocator::BRUTE_FORCE);
+    brute->SetDataSet(s.pd);
+    brute->BuildLocator();
+    RunPoints(brute, xs, refStride, &ref);
+  }
+  const double diag = s.store->Bounds().Diagonal();
+  auto measure = [&](const std::string& name, vtkAbstractCellLocator* loc) {
+    PointRow r;
+    r.scene = s.name;
+    r.engine = name;
+    loc->SetDataSet(s.pd);
+    const cli::BenchStats b = Time(std::min(runs, 3), [&] { loc->FreeSearchStructure(); loc->Modified(); loc->BuildLocator(); });
+    r.buildMs = b.median * 1e3;
+    // As many points as fit in about half a second per run (VTK's locators are slow on far points).
+    const size_t probeStride = std::max<size_t>(1, xs.size() / 100);
+    const auto t0 = Clock::now();
+    RunPoints(loc, xs, probeStride, nullptr);
+    const double per = Since(t0) / double((xs.size() + probeStride - 1) / probeStride);
+    const size_t fit = static_cast<size_t>(0.5 / std::max(per, 1e-9));
+    const size_t stride = std::max<size_t>(1, xs.size() / std::max<size_t>(fit, 300));
+    r.points = (xs.size() + stride - 1) / stride;
+    const cli::BenchStats t = Time(runs, [&] { RunPoints(loc, xs, stride, nullptr); });
+    r.rate = { double(r.points) / t.median, double(r.points) / t.hi, double(r.points) / t.lo };
+    std::vector<PointAnswer> got;
+    RunPoints(loc, xs, refStride, &got);
+    r.maxRelError = 0;
+    r.refPoints = ref.size();
+    for (size_t i = 0; i < ref.size(); ++i)
+    {
+      const double d = std::sqrt(std::max(got[i].d2, 0.0)), dr = std::sqrt(ref[i].d2);
+      r.maxRelError = std::max(r.maxRelError, std::fabs(d - dr) / std::max(dr, 1e-9 * diag));
+      r.sameCell += got[i].cell == ref[i].cell;
+    }
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "1 thread, %zu of %zu points", r.points, xs.size());
+    r.note = buf;
+    rows.push_back(r);
+    std::fprintf(stderr, "  closest point %-32s build %8.1f ms  %10.0f queries/s  max rel. error %.2g\n",
+      name.c_str(), r.buildMs, r.rate.median, r.maxRelError);
+  };
+  art::SetThreadCount(1);
+  for (int kind : { vtkTriangleGridLocator::UNIFORM_GRID, vtkTriangleGridLocator::RECURSIVE_GRID,
+         vtkTriangleGridLocator::OCTREE })
+  {
+    vtkNew<vtkTriangleGridLocator> loc;
+    loc->SetAcceleratorType(kind);
+    static const char* names[] = { "", "vtkTriangleGridLocator uniform grid", "vtkTriangleGridLocator R (default)",
+      "vtkTriangleGridLocator O" };
+    measure(names[kind], loc);
+  }
+  vtkNew<vtkStaticCellLocator> st;
+  measure("VTK vtkStaticCellLocator", st);
+  vtkNew<vtkCellLocator> cl;
+  measure("VTK vtkCellLocator", cl);
+}
+
 void Declare(cli::Options& o)
 {
   const std::string shared = std::string(ART_DATA_DIR) + "/../../shared/data/";
@@ -523,6 +679,9 @@ void Declare(cli::Options& o)
   o.Add("tri-vtk-rays", 0, "N", "triangles: primary rays given to each VTK locator (a strided subset)", "20000");
   o.Add("tri-no-tables", 0, "", "triangles: skip the paper's parameter tables");
   o.Add("tri-no-vtk", 0, "", "triangles: skip VTK's locators");
+  o.Add("tri-points", 0, "N", "triangles: closest-point queries per scene (a third inside the box, near the "
+    "surface, far away)", "30000");
+  o.Add("tri-no-closest-point", 0, "", "triangles: skip the closest-point table");
 }
 
 int Run(const cli::Options& o)
@@ -536,6 +695,8 @@ int Run(const cli::Options& o)
   const size_t vtkRays = static_cast<size_t>(std::max(100LL, o.GetInt("tri-vtk-rays")));
   const int userThreads = art::GetThreadCount();
   std::vector<Row> rows;
+  std::vector<PointRow> pointRows;
+  const size_t nPoints = static_cast<size_t>(std::max(300LL, o.GetInt("tri-points")));
   std::vector<Scene> scenes;
   {
     std::stringstream ss(o.Get("tri-scenes"));
@@ -729,6 +890,10 @@ int Run(const cli::Options& o)
       std::fprintf(stderr, "  %-40s build %8.1f ms  %6.1f B/tri  closest %6.2f Mrays/s  shadow %6.2f Mrays/s\n",
         r.engine.c_str(), r.buildMs, r.bytesPerTri, r.prim1.median, r.shad1.median);
     }
+    if (!o.Flag("tri-no-closest-point"))
+    {
+      BenchClosestPoint(s, nPoints, runs, pointRows);
+    }
   }
   art::SetThreadCount(userThreads);
 
@@ -810,7 +975,48 @@ int Run(const cli::Options& o)
 #else
   top.Set("embree", false);
 #endif
+  // Closest point: ours (default R) against VTK's two locators, same points.
+  std::vector<cli::Json> jpoints;
+  std::string pointText;
+  for (const PointRow& r : pointRows)
+  {
+    auto rateOf = [&](const std::string& engine) {
+      for (const PointRow& q : pointRows)
+      {
+        if (q.scene == r.scene && q.engine == engine)
+        {
+          return q.rate.median;
+        }
+      }
+      return -1.0;
+    };
+    const double vs = rateOf("VTK vtkStaticCellLocator"), vc = rateOf("VTK vtkCellLocator");
+    cli::Json j;
+    j.Set("scene", r.scene).Set("engine", r.engine).Set("buildMs", r.buildMs).Set("queriesPerSecond", StatsJson(r.rate));
+    j.Set("points", static_cast<long long>(r.points)).Set("maxRelErrorVsBruteForce", r.maxRelError);
+    j.Set("referencePoints", static_cast<long long>(r.refPoints)).Set("sameCellAsBruteForce", static_cast<long long>(r.sameCell));
+    j.Set("vsVtkStatic", vs > 0 ? r.rate.median / vs : -1.0).Set("vsVtkCellLocator", vc > 0 ? r.rate.median / vc : -1.0);
+    jpoints.push_back(j);
+    char err[32];
+    std::snprintf(err, sizeof err, "%.1e", r.maxRelError);
+    pointText += "| " + r.scene + " | " + r.engine + " | " + Fmt(r.buildMs, 1) + " | " + FmtStats(r.rate) + " | " +
+      std::to_string(r.points) + " | " + err + " | " + std::to_string(r.sameCell) + " / " + std::to_string(r.refPoints) +
+      " | " + (vs > 0 ? Fmt(r.rate.median / vs, 1) : "n/a") + " | " + (vc > 0 ? Fmt(r.rate.median / vc, 1) : "n/a") +
+      " |\n";
+  }
+  const std::string pointHead =
+    "## Closest point: FindClosestPoint, 1 thread, same points\n\n" + std::to_string(nPoints) +
+    " query points per scene: a third uniform in the box grown by 5%, a third within 1% of the diagonal of the "
+    "surface, a third 1-10 diagonals away. Error: max |d - d_brute| / d_brute against our brute force (every "
+    "triangle, exact in double) on the reference points; same cell: equal cell ids there (the rest are ties: "
+    "points equally near several cells, e.g. a shared vertex).\n\n"
+    "| scene | locator | build ms | queries/s | points timed | max rel. distance error | same cell as brute force | "
+    "vs vtkStaticCellLocator | vs vtkCellLocator |\n|---|---|---:|---|---:|---:|---:|---:|---:|\n";
   top.Set("ratios", jratios).Set("rows", jrows);
+  if (!jpoints.empty())
+  {
+    top.Set("closestPoint", jpoints).Set("closestPointQueries", static_cast<long long>(nPoints));
+  }
   const std::string stem = dir + "/triangles";
   {
     std::ofstream f(stem + ".json");
@@ -826,6 +1032,10 @@ int Run(const cli::Options& o)
       << "| scene | triangles | closest vs Embree, 1 thread | closest vs Embree, 2 threads | shadow vs Embree | all hits vs Embree | closest vs vtkStaticCellLocator |\n"
       << "|---|---:|---:|---:|---:|---:|---:|\n"
       << ratioText << "\n";
+    if (!pointText.empty())
+    {
+      f << pointHead << pointText << "\n";
+    }
     for (const Scene& s : scenes)
     {
       f << "## " << s.name << " (" << s.store->Size() << " triangles, " << s.primary.size() << " primary + "
@@ -851,6 +1061,10 @@ int Run(const cli::Options& o)
   std::printf("## Ratios: our recursive grid / anchor\n\n| scene | triangles | closest vs Embree 1T | 2T | shadow vs Embree | "
               "all hits vs Embree | closest vs vtkStaticCellLocator |\n|---|---:|---:|---:|---:|---:|---:|\n%s\n",
     ratioText.c_str());
+  if (!pointText.empty())
+  {
+    std::printf("%s%s\n", pointHead.c_str(), pointText.c_str());
+  }
   cli::FinishResults(src + "/tests/benchmarks/triangles_chart.py", stem);
   return cli::ExitOk;
 }

@@ -1,5 +1,6 @@
 """Chart of `adaptivert bench triangles`: closest-hit Mrays/s per scene and engine (1 and 2
-threads, log scale), and the paper's R/O tables as throughput against memory.
+threads, log scale), the paper's R/O tables as throughput against memory, and (when measured)
+FindClosestPoint queries/s of vtkTriangleGridLocator against VTK's cell locators.
 Usage: /usr/bin/python3 triangles_chart.py triangles.json triangles.png"""
 import json
 import sys
@@ -33,7 +34,11 @@ for r in main:
         engines.append(r["kind"])
 
 
-fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(15, 6))
+points = data.get("closestPoint", [])
+if points:
+    fig, (ax1, ax2, ax3) = plt.subplots(1, 3, figsize=(21, 6))
+else:
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(15, 6))
 width = 0.8 / max(1, len(engines))
 for k, eng in enumerate(engines):
     v1, v2 = [], []
@@ -68,6 +73,34 @@ ax2.set_ylabel("closest hit, Mrays/s, 1 thread")
 ax2.set_title("The paper's tables: R[thr,N] and O[thr,w]")
 ax2.grid(alpha=0.3)
 ax2.legend(fontsize=7)
+if points:
+    pscenes = []
+    for r in points:
+        if r["scene"] not in pscenes:
+            pscenes.append(r["scene"])
+    pengines = []
+    for r in points:
+        if r["engine"] not in pengines:
+            pengines.append(r["engine"])
+    w = 0.8 / max(1, len(pengines))
+    for k, eng in enumerate(pengines):
+        vals, lo, hi = [], [], []
+        for sc in pscenes:
+            r = next((r for r in points if r["scene"] == sc and r["engine"] == eng), None)
+            q = r["queriesPerSecond"] if r else {"median": 0, "min": 0, "max": 0}
+            vals.append(q["median"])
+            lo.append(q["median"] - q["min"])
+            hi.append(q["max"] - q["median"])
+        xs = [i + (k - len(pengines) / 2) * w + w / 2 for i in range(len(pscenes))]
+        ax3.bar(xs, vals, w * 0.9, yerr=[lo, hi], capsize=2,
+                label=eng.replace("vtkTriangleGridLocator ", "ours: ").replace("VTK vtk", "VTK "))
+    ax3.set_xticks(range(len(pscenes)))
+    ax3.set_xticklabels(pscenes)
+    ax3.set_yscale("log")
+    ax3.set_ylabel("FindClosestPoint queries/s, 1 thread (median, min-max)")
+    ax3.set_title("Closest point: same %d points per scene (in box, near, far)" % data.get("closestPointQueries", 0))
+    ax3.legend(fontsize=7)
+    ax3.grid(axis="y", which="both", alpha=0.3)
 fig.suptitle("adaptivert bench triangles, %s, commit %s, %s" % (data["date"], data["commit"], data["cpu"]), fontsize=9)
 fig.tight_layout()
 fig.savefig(sys.argv[2], dpi=90)
