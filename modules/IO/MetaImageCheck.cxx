@@ -1,7 +1,9 @@
 #include "MetaImageCheck.h"
 #include "Error.h"
 
+#include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -98,6 +100,84 @@ long long Integer(const Keys& keys, const std::string& key, long long fallback, 
   }
   return v;
 }
+// The files of "ElementDataFile = LIST" (names on the following lines) or of a printf pattern
+// "name%03d.raw first last step" must all exist and together hold `need` bytes.
+void CheckFileSeries(const std::string& path, const std::string& edf, std::streamoff dataStart, long long need)
+{
+  std::vector<std::string> names;
+  if (edf.compare(0, 4, "LIST") == 0)
+  {
+    std::ifstream in(path, std::ios::binary);
+    in.seekg(dataStart);
+    std::string line;
+    while (std::getline(in, line))
+    {
+      if (!Trim(line).empty())
+      {
+        names.push_back(Trim(line));
+      }
+    }
+  }
+  else
+  {
+    std::istringstream s(edf);
+    std::string pattern;
+    long long first = 0, last = -1, step = 1;
+    s >> pattern >> first >> last >> step;
+    // The pattern is a printf format: allow exactly one integer conversion (%d, %03d, %i).
+    int conversions = 0;
+    for (std::size_t i = 0; i < pattern.size(); ++i)
+    {
+      if (pattern[i] != '%')
+      {
+        continue;
+      }
+      std::size_t j = i + 1;
+      while (j < pattern.size() && (std::isdigit(static_cast<unsigned char>(pattern[j])) || pattern[j] == '-'))
+      {
+        ++j;
+      }
+      if (j < pattern.size() && pattern[j] == '%' && j == i + 1)
+      {
+        i = j; // "%%"
+        continue;
+      }
+      conversions += (j < pattern.size() && (pattern[j] == 'd' || pattern[j] == 'i')) ? 1 : 100;
+      i = j;
+    }
+    if (!s || conversions != 1 || step == 0 || (last - first) / step > 100000 || (last - first) / step < 0)
+    {
+      throw Error("ElementDataFile '" + edf + "' is not 'pattern first last step' with one %d in the pattern", path);
+    }
+    for (long long i = first; step > 0 ? i <= last : i >= last; i += step)
+    {
+      char name[4096];
+      std::snprintf(name, sizeof name, pattern.c_str(), static_cast<int>(i));
+      names.push_back(name);
+    }
+  }
+  long long have = 0;
+  for (const std::string& n : names)
+  {
+    const fs::path file = fs::path(n).is_absolute() ? fs::path(n) : fs::path(path).parent_path() / n;
+    std::error_code ec;
+    if (!fs::is_regular_file(file, ec))
+    {
+      throw Error("data file '" + n + "' of the series named in the header does not exist", path);
+    }
+    have += static_cast<long long>(fs::file_size(file, ec));
+  }
+  if (names.empty())
+  {
+    throw Error("ElementDataFile " + edf + " names no files", path);
+  }
+  if (have < need)
+  {
+    throw Error("truncated: header promises " + std::to_string(need) + " data bytes, its " +
+        std::to_string(names.size()) + " files hold " + std::to_string(have),
+      path);
+  }
+}
 } // namespace
 
 void CheckMetaImage(const std::string& path)
@@ -148,9 +228,11 @@ void CheckMetaImage(const std::string& path)
   const std::string& edf = keys["ElementDataFile"];
   if (edf != "LOCAL" && edf != "Local" && edf != "local")
   {
-    if (edf.find('%') != std::string::npos || edf == "LIST")
+    if (edf.find('%') != std::string::npos || edf.compare(0, 4, "LIST") == 0)
     {
-      return; // a file series; VTK checks each file as it reads
+      // A file series: vtkMetaImageReader zero-fills the slices of a missing or short file.
+      CheckFileSeries(path, edf, dataStart, compressed ? 0 : static_cast<long long>(count) * esize * channels);
+      return;
     }
     dataFile = (fs::path(path).parent_path() / edf).string();
     offset = Integer(keys, "HeaderSize", 0, path);

@@ -226,6 +226,37 @@ TEST(DataLoader, MetaImageHeaderNumbers)
 
 // vtkPLYReader (VTK 9.1) segfaulted on a face index past the vertex count and on an ASCII face
 // line shorter than its count; the body is read through once before VTK sees it.
+// A MetaImage slice series (ElementDataFile = LIST, or "pattern first last step"): vtkMetaImageReader
+// zero-filled the slices of a missing or short file without a word. Every file must exist and
+// together hold the data; a pattern is a printf format with one integer conversion.
+TEST(DataLoader, MetaImageFileSeries)
+{
+  const std::string dir = std::string(ART_TEST_OUTPUT) + "/mha-series/";
+  std::filesystem::create_directories(dir);
+  for (short k = 0; k < 3; ++k)
+  {
+    std::ofstream f(dir + "s" + std::to_string(k) + ".raw", std::ios::binary);
+    for (short i = 0; i < 12; ++i)
+    {
+      const short v = 100 * k + i;
+      f.write(reinterpret_cast<const char*>(&v), 2);
+    }
+  }
+  auto header = [&dir](const std::string& name, const std::string& dims, const std::string& data) {
+    std::ofstream(dir + name) << "ObjectType = Image\nNDims = 3\nDimSize = " << dims
+                              << "\nElementType = MET_SHORT\nElementDataFile = " << data;
+    return dir + name;
+  };
+  auto img = art::LoadVolume(header("list.mhd", "4 3 3", "LIST\ns0.raw\ns1.raw\ns2.raw\n"));
+  EXPECT_EQ(img->GetPointData()->GetScalars()->GetRange()[1], 211);
+  img = art::LoadVolume(header("pattern.mhd", "4 3 3", "s%d.raw 0 2 1\n"));
+  EXPECT_EQ(img->GetPointData()->GetScalars()->GetTuple1(35), 211);
+  ExpectError(header("missing.mhd", "4 3 3", "LIST\ns0.raw\ns1.raw\nnope.raw\n"),
+    "data file 'nope.raw' of the series named in the header does not exist");
+  ExpectError(header("short.mhd", "4 3 4", "s%d.raw 0 2 1\n"), "truncated: header promises 96 data bytes, its 3 files hold 72");
+  ExpectError(header("format.mhd", "4 3 3", "s%s%n.raw 0 2 1\n"), "with one %d in the pattern");
+}
+
 TEST(DataLoader, PlyFacesAreChecked)
 {
   ExpectError(Bad + "face-index-out-of-range.ply", "face 0 refers to vertex 99999999 of 3");
