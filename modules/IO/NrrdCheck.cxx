@@ -65,6 +65,14 @@ void CheckNrrd(const std::string& path)
   const std::streamoff attachedStart = in.tellg();
   const int esize = NrrdTypeSize(keys["type"]);
   const std::string encoding = keys["encoding"];
+  const std::string series = keys.count("data file") ? keys["data file"] : keys["datafile"];
+  if (series.find(' ') != std::string::npos || series.find('%') != std::string::npos || series.compare(0, 4, "LIST") == 0)
+  {
+    // vtkNrrdReader (VTK 9.1) segfaults on every file series, even a complete one.
+    throw Error("data file '" + series + "' is a series of files, which VTK's NRRD reader cannot read: join the "
+                "slices into one data file (unu join, or save from Slicer as one .nrrd)",
+      path);
+  }
   if (esize == 0 || (encoding != "raw") || !keys.count("sizes"))
   {
     return; // compressed, text or unusual data: VTK checks as it reads
@@ -94,10 +102,6 @@ void CheckNrrd(const std::string& path)
   const std::string df = keys.count("data file") ? keys["data file"] : keys["datafile"];
   if (!df.empty())
   {
-    if (df.find(' ') != std::string::npos || df.find('%') != std::string::npos || df.compare(0, 4, "LIST") == 0)
-    {
-      return; // a list of files: VTK checks each
-    }
     dataFile = (fs::path(df).is_absolute() ? fs::path(df) : fs::path(path).parent_path() / df).string();
     start = 0;
     std::error_code ec;

@@ -11,7 +11,8 @@
 namespace art
 {
 /// Throws art::Error naming `path` when raw NRRD data is shorter than the header promises.
-/// Compressed encodings, data file lists and byte skip -1 are left to VTK.
+/// A data file series (LIST or a pattern), which vtkNrrdReader segfaults on, is an error too.
+/// Compressed encodings and byte skip -1 are left to VTK.
 ADAPTIVERTIO_EXPORT void CheckNrrd(const std::string& path);
 } // namespace art
 

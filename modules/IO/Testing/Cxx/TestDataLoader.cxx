@@ -296,4 +296,10 @@ TEST(DataLoader, TruncatedNrrd)
   ExpectError(dir + "short.nhdr", "truncated: header promises 330 data bytes, file holds 329");
   std::ofstream(dir + "short.raw", std::ios::binary) << std::string(330, 'x');
   EXPECT_EQ(art::LoadVolume(dir + "short.nhdr")->GetNumberOfPoints(), 165);
+  // vtkNrrdReader segfaulted on every data file series, complete or not, raw or gzip.
+  for (const std::string series : { "LIST\nshort.raw\nshort.raw\nshort.raw", "short%d.raw 0 2 1" })
+  {
+    std::ofstream(dir + "series.nhdr", std::ios::binary) << header << "data file: " << series << "\n";
+    ExpectError(dir + "series.nhdr", "is a series of files, which VTK's NRRD reader cannot read");
+  }
 }
