@@ -123,13 +123,22 @@ void Orientation(const std::string& path, vtkImageData* img, std::string& text, 
     const char* names[6] = { "left", "right", "posterior", "anterior", "inferior", "superior" };
     words += (words.empty() ? "" : ", ") + std::string(names[letters.find(c)]);
   }
-  Out(text, "  orientation  %s (%si, j, k toward %s; world x, y, z = left, posterior, superior)\n", codes.c_str(),
-    nifti ? "the file's " : "", words.c_str());
-  j.Set("orientation", codes);
+  if (!nifti || placement.Placed) // a NIfTI file without qform or sform says nothing of anatomy
+  {
+    Out(text, "  orientation  %s (%si, j, k toward %s; world x, y, z = left, posterior, superior)\n", codes.c_str(),
+      nifti ? "the file's " : "", words.c_str());
+    j.Set("orientation", codes);
+  }
   if (nifti)
   {
     Out(text, "  placed by    NIfTI %s%s\n", placement.How.c_str(), placement.SlicesReversed ? "; slices read last first" : "");
     j.Set("nifti_placement", placement.How).Set("slices_reversed", placement.SlicesReversed);
+    if (placement.TimePoints > 1)
+    {
+      // A 4-D series (fMRI, DWI) loads its first volume only: say so.
+      Out(text, "  volumes      %lld in the file (dim[4..7]); the first is loaded\n", placement.TimePoints);
+      j.Set("volumes_in_file", placement.TimePoints);
+    }
   }
 }
 

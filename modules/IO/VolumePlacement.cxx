@@ -331,7 +331,13 @@ NiftiPlacementInfo NiftiPlacement(const std::string& path)
   NiftiPlacementInfo info;
   info.How = t.M ? std::string(t.Name) + " code " + std::to_string(t.Code) + " (" + CodeName(t.Code) + ")"
                  : "none (no qform or sform: axes as stored, origin 0)";
+  info.Placed = t.M != nullptr;
   info.SlicesReversed = r->GetQFac() < 0;
+  vtkNIFTIImageHeader* h = r->GetNIFTIHeader();
+  for (int d = 4; d <= std::min<long long>(h->GetDim(0), 7); ++d)
+  {
+    info.TimePoints *= std::max<long long>(h->GetDim(d), 1);
+  }
   return info;
 }
 

@@ -26,7 +26,9 @@ ADAPTIVERTIO_EXPORT void PlaceNifti(vtkImageData* img, vtkNIFTIImageReader* read
 struct NiftiPlacementInfo
 {
   std::string How;             ///< "sform code 2 (aligned anatomy)", "qform code 1 (scanner)" or "none (...)"
+  bool Placed = false;         ///< a transform placed the voxels (else their orientation is unknown)
   bool SlicesReversed = false; ///< VTK reads the slices last first (qfac -1 or a left-handed sform)
+  long long TimePoints = 1;    ///< dim[4]: volumes in the file; VTK reads the first
 };
 /// Which transform of the NIfTI file `path` places its voxels (its header only is read), for `info`.
 ADAPTIVERTIO_EXPORT NiftiPlacementInfo NiftiPlacement(const std::string& path);
