@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -116,11 +117,13 @@ std::vector<Cam> Cameras(const json& j, const std::string& file)
   }
   else if (j.is_object())
   {
-    const int n = Field(j, "orbit", 1, file);
-    if (n < 1 || n > 100000)
+    // Read as a double: 2.5 became 2 frames, and 1e10 overflowed an int.
+    const double orbit = Field(j, "orbit", 1.0, file);
+    if (!(orbit >= 1 && orbit <= 100000) || orbit != std::floor(orbit))
     {
-      throw art::Error("cameras.orbit must be 1..100000", file);
+      throw art::Error("cameras.orbit must be a whole number 1..100000, got " + j["orbit"].dump(), file);
     }
+    const int n = static_cast<int>(orbit);
     for (int i = 0; i < n; ++i)
     {
       cams.push_back({ 360.0 * i / n, Field(j, "elevation", 0.0, file), Field(j, "zoom", 1.0, file) });
@@ -128,6 +131,10 @@ std::vector<Cam> Cameras(const json& j, const std::string& file)
   }
   else if (j.is_array())
   {
+    if (j.empty())
+    {
+      throw art::Error("cameras must not be an empty list", file);
+    }
     for (const auto& c : j)
     {
       cams.push_back({ Field(c, "azimuth", 0.0, file), Field(c, "elevation", 0.0, file), Field(c, "zoom", 1.0, file) });
