@@ -176,6 +176,21 @@ TEST(DataLoader, ObjNormalsSplitOnlyAtCreases)
   ExpectError(path, "line 2: expected 3 numbers, found 2");
 }
 
+// Survey and CAD exports sit far from the origin: vtkOBJReader kept float points, so a 1-unit
+// sphere 2.5e7 out lost every triangle to rounding ("has no triangles to render"). Points are double.
+TEST(DataLoader, ObjKeepsDoublePrecision)
+{
+  const std::string path = std::string(ART_TEST_OUTPUT) + "/far.obj";
+  std::ofstream(path) << "v 25000000.125 -30000000.5 1000.25\nv 25000000.375 -30000000.5 1000.25\n"
+                         "v 25000000.125 -30000000.25 1000.25\nf 1 2 3\n";
+  auto pd = art::LoadSurface(path);
+  double p[3];
+  pd->GetPoint(1, p);
+  EXPECT_EQ(p[0], 25000000.375);
+  pd->GetPoint(2, p);
+  EXPECT_EQ(p[1], -30000000.25);
+}
+
 TEST(DataLoader, WrongKindForTheCall)
 {
   EXPECT_THROW(art::LoadSurface(Data + "ct-head-128.mha"), art::Error);
