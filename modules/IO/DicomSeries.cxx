@@ -5,6 +5,8 @@
 #include <DICOMParser.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -20,7 +22,42 @@ struct Image
   std::string File;
   int Width = 0, Height = 0;
   std::string Syntax; // transfer syntax UID
+  double Position[3] = { 0, 0, 0 }, Orientation[6] = { 0, 0, 0, 0, 0, 0 };
 };
+
+// vtkDICOMImageReader spaces the slices evenly (by the first two): a missing slice or a change of
+// spacing squeezed the volume without a word, and two images at one position (two acquisitions)
+// stacked both. Positions are compared along the slice normal.
+void CheckSpacing(const std::vector<Image>& images, const std::string& dir)
+{
+  const double* o = images.front().Orientation;
+  const double n[3] = { o[1] * o[5] - o[2] * o[4], o[2] * o[3] - o[0] * o[5], o[0] * o[4] - o[1] * o[3] };
+  if (images.size() < 3 || !(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] > 0.5))
+  {
+    return; // too few slices to compare, or no orientation
+  }
+  std::vector<std::pair<double, std::string>> at;
+  for (const Image& im : images)
+  {
+    at.emplace_back(n[0] * im.Position[0] + n[1] * im.Position[1] + n[2] * im.Position[2],
+      fs::path(im.File).filename().string());
+  }
+  std::sort(at.begin(), at.end());
+  const double step = at[1].first - at[0].first;
+  for (std::size_t i = 1; i < at.size(); ++i)
+  {
+    const double gap = at[i].first - at[i - 1].first;
+    if (std::abs(gap - step) > 0.01 * std::abs(step) + 1e-3 || gap < 1e-4)
+    {
+      char text[400];
+      std::snprintf(text, sizeof text,
+        "slices are not evenly spaced: %s and %s are %.4g mm apart, %s and %s %.4g mm (a missing slice, two "
+        "acquisitions in one series, or a change of spacing; VTK would stack them evenly)",
+        at[0].second.c_str(), at[1].second.c_str(), step, at[i - 1].second.c_str(), at[i].second.c_str(), gap);
+      throw Error(text, dir);
+    }
+  }
+}
 
 // vtkDICOMImageReader reads only uncompressed pixels: implicit or explicit VR, little or big endian.
 bool Uncompressed(std::string uid)
@@ -59,8 +96,10 @@ std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInF
     parser.ReadHeader();
     dicom_stl::vector<dicom_stl::string> uids;
     helper.GetSeriesUIDs(uids);
-    series[uids.empty() ? std::string() : uids.front()].push_back(
-      { p.string(), helper.GetWidth(), helper.GetHeight(), helper.GetTransferSyntaxUID() });
+    Image im{ p.string(), helper.GetWidth(), helper.GetHeight(), helper.GetTransferSyntaxUID() };
+    std::copy(helper.GetImagePositionPatient(), helper.GetImagePositionPatient() + 3, im.Position);
+    std::copy(helper.GetImageOrientationPatient(), helper.GetImageOrientationPatient() + 6, im.Orientation);
+    series[uids.empty() ? std::string() : uids.front()].push_back(im);
   }
   if (seriesInFolder)
   {
@@ -109,6 +148,7 @@ std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInF
         dir);
     }
   }
+  CheckSpacing(chosen, dir);
   std::vector<std::string> files;
   for (const Image& im : chosen)
   {

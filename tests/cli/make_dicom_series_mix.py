@@ -4,7 +4,8 @@ dicom-scout/: a 3-slice, 3-row, 4-column CT series (voxel (i, j, k) = 100 k + 10
 2-image 5 x 5 scout series (value 7000) whose SeriesInstanceUID sorts first: VTK read the scout's
 series with the CT's size (heap corruption, abort). dicom-mixed-size/: the CT series with its
 middle slice 2 x 2 (read as garbage). dicom-compressed/: JPEG Lossless transfer syntax (VTK cannot
-decode it; its error named neither that nor a way out). Run once; the output is committed."""
+decode it; its error named neither that nor a way out). dicom-gap/: 4 slices at 30, 31.5, 33 and
+36 mm (one missing): VTK stacked them 1.5 mm apart without a word. Run once; the output is committed."""
 import os
 import shutil
 
@@ -55,7 +56,7 @@ def ct(folder, odd=None):
         write(os.path.join(folder, "ct%d.dcm" % k), STUDY + ".3", k + 1, (10, 20, 30 + 1.5 * k), rows, cols, pixels)
 
 
-for name in ("dicom-scout", "dicom-mixed-size", "dicom-compressed"):
+for name in ("dicom-scout", "dicom-mixed-size", "dicom-compressed", "dicom-gap"):
     shutil.rmtree(os.path.join(here, name), ignore_errors=True)
     os.makedirs(os.path.join(here, name))
 ct(os.path.join(here, "dicom-scout"))
@@ -66,3 +67,6 @@ ct(os.path.join(here, "dicom-mixed-size"), odd=1)
 for k in range(2):
     write(os.path.join(here, "dicom-compressed", "jpeg%d.dcm" % k), STUDY + ".4", k + 1, (0, 0, 1.5 * k), 8, 8,
           np.zeros((8, 8)), syntax="1.2.840.10008.1.2.4.70")
+for n, z in enumerate((30, 31.5, 33, 36)):
+    write(os.path.join(here, "dicom-gap", "ct%d.dcm" % n), STUDY + ".5", n + 1, (10, 20, z), 3, 4,
+          np.full((3, 4), 10 * n))
