@@ -2,6 +2,7 @@
 #include "Error.h"
 
 #include <DICOMAppHelper.h>
+#include <DICOMCallback.h>
 #include <DICOMParser.h>
 
 #include <algorithm>
@@ -23,6 +24,20 @@ struct Image
   int Width = 0, Height = 0;
   std::string Syntax; // transfer syntax UID
   double Position[3] = { 0, 0, 0 }, Orientation[6] = { 0, 0, 0, 0, 0, 0 };
+  long Frames = 1;
+};
+
+// NumberOfFrames (0028,0008), an integer string; DICOMAppHelper does not keep it.
+struct FramesTag
+{
+  long Frames = 1;
+  void Read(DICOMParser*, doublebyte, doublebyte, DICOMParser::VRTypes, unsigned char* val, quadbyte len)
+  {
+    if (val && len > 0)
+    {
+      Frames = std::atol(std::string(reinterpret_cast<const char*>(val), static_cast<std::size_t>(len)).c_str());
+    }
+  }
 };
 
 // vtkDICOMImageReader spaces the slices evenly (by the first two): a missing slice or a change of
@@ -93,10 +108,15 @@ std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInF
       continue;
     }
     helper.RegisterCallbacks(&parser);
+    FramesTag frames;
+    DICOMMemberCallback<FramesTag> framesCallback;
+    framesCallback.SetCallbackFunction(&frames, &FramesTag::Read);
+    parser.AddDICOMTagCallback(0x0028, 0x0008, DICOMParser::VR_IS, &framesCallback);
     parser.ReadHeader();
     dicom_stl::vector<dicom_stl::string> uids;
     helper.GetSeriesUIDs(uids);
     Image im{ p.string(), helper.GetWidth(), helper.GetHeight(), helper.GetTransferSyntaxUID() };
+    im.Frames = frames.Frames;
     std::copy(helper.GetImagePositionPatient(), helper.GetImagePositionPatient() + 3, im.Position);
     std::copy(helper.GetImageOrientationPatient(), helper.GetImageOrientationPatient() + 6, im.Orientation);
     series[uids.empty() ? std::string() : uids.front()].push_back(im);
@@ -137,6 +157,14 @@ std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInF
       throw Error("holds compressed DICOM images (transfer syntax " + im.Syntax.substr(0, im.Syntax.find('\0')) +
           " in " + fs::path(im.File).filename().string() +
           "), which VTK's reader cannot decode: decompress them first (gdcmconv --raw or dcmdjpeg)",
+        dir);
+    }
+    if (im.Frames > 1)
+    {
+      // vtkDICOMImageReader reads the first frame of an (enhanced) multi-frame image as one slice.
+      throw Error("holds a multi-frame DICOM image (" + std::to_string(im.Frames) + " frames in " +
+          fs::path(im.File).filename().string() +
+          "), which VTK's reader reads as its first frame only: convert it first (dcm2niix to .nii, or to single frames)",
         dir);
     }
     if (im.Width != chosen.front().Width || im.Height != chosen.front().Height)

@@ -5,7 +5,8 @@ dicom-scout/: a 3-slice, 3-row, 4-column CT series (voxel (i, j, k) = 100 k + 10
 series with the CT's size (heap corruption, abort). dicom-mixed-size/: the CT series with its
 middle slice 2 x 2 (read as garbage). dicom-compressed/: JPEG Lossless transfer syntax (VTK cannot
 decode it; its error named neither that nor a way out). dicom-gap/: 4 slices at 30, 31.5, 33 and
-36 mm (one missing): VTK stacked them 1.5 mm apart without a word. Run once; the output is committed."""
+36 mm (one missing): VTK stacked them 1.5 mm apart without a word. dicom-multiframe/: one image of
+3 frames (NumberOfFrames 3): VTK read its first frame as the whole volume. Run once; the output is committed."""
 import os
 import shutil
 
@@ -56,7 +57,7 @@ def ct(folder, odd=None):
         write(os.path.join(folder, "ct%d.dcm" % k), STUDY + ".3", k + 1, (10, 20, 30 + 1.5 * k), rows, cols, pixels)
 
 
-for name in ("dicom-scout", "dicom-mixed-size", "dicom-compressed", "dicom-gap"):
+for name in ("dicom-scout", "dicom-mixed-size", "dicom-compressed", "dicom-gap", "dicom-multiframe"):
     shutil.rmtree(os.path.join(here, name), ignore_errors=True)
     os.makedirs(os.path.join(here, name))
 ct(os.path.join(here, "dicom-scout"))
@@ -70,3 +71,9 @@ for k in range(2):
 for n, z in enumerate((30, 31.5, 33, 36)):
     write(os.path.join(here, "dicom-gap", "ct%d.dcm" % n), STUDY + ".5", n + 1, (10, 20, z), 3, 4,
           np.full((3, 4), 10 * n))
+frames = os.path.join(here, "dicom-multiframe", "frames.dcm")
+write(frames, STUDY + ".6", 1, (10, 20, 30), 3, 4, np.zeros((3, 4)))
+ds = pydicom.dcmread(frames)
+ds.NumberOfFrames = 3
+ds.PixelData = np.arange(36, dtype="<i2").tobytes()
+ds.save_as(frames)
