@@ -32,6 +32,7 @@
 #include <vtkNrrdReader.h>
 #include <vtkPLYReader.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 #include <vtkUnstructuredGrid.h>
@@ -479,13 +480,14 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   const std::string e = LowerExtension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
   auto pd = vtkSmartPointer<vtkPolyData>::New();
+  std::vector<double> plyDoubles;
   if (e == ".obj")
   {
     pd = ReadObj(path); // vtkOBJReader drops faces (see ObjReader.h)
   }
   else if (e == ".ply")
   {
-    CheckPly(path);
+    CheckPly(path, &plyDoubles);
     reader = FileReader<vtkPLYReader>(path);
   }
   else if (e == ".stl")
@@ -505,6 +507,18 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   {
     RunReader(reader, path);
     pd->ShallowCopy(reader->GetOutputDataObject(0));
+  }
+  if (!plyDoubles.empty() && static_cast<vtkIdType>(plyDoubles.size()) == 3 * pd->GetNumberOfPoints())
+  {
+    // The file's double coordinates, not vtkPLYReader's floats (survey data far from the origin).
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(pd->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+    {
+      points->SetPoint(i, &plyDoubles[3 * static_cast<std::size_t>(i)]);
+    }
+    pd->SetPoints(points);
   }
   if (pd->GetNumberOfPoints() == 0 || pd->GetNumberOfPolys() + pd->GetNumberOfStrips() == 0)
   {

@@ -129,7 +129,7 @@ private:
 // that nothing is missing and that faces name vertices that exist: VTK 9.1 crashes on a short
 // ASCII line and on a face index past the vertex count.
 void CheckBody(std::istream& in, const std::vector<Element>& elements, bool binary, bool bigEndian,
-  const std::string& path)
+  const std::string& path, std::vector<double>* xyz)
 {
   long long vertices = -1;
   for (const Element& e : elements)
@@ -145,19 +145,49 @@ void CheckBody(std::istream& in, const std::vector<Element>& elements, bool bina
   {
     const bool isFace = e.name == "face";
     size_t row = 0; // bytes per instance when no property is a list
-    for (const Property& p : e.props)
+    // Double x, y, z of the vertices are kept: vtkPLYReader stores floats, which lose survey
+    // coordinates (a 1 m triangle 2.5e7 m out collapsed to a point).
+    int axis[16];
+    std::fill(axis, axis + 16, -1);
+    size_t at[3] = { 0, 0, 0 };
+    int found = 0; // bit a: axis a is a double
+    for (size_t k = 0; k < e.props.size(); ++k)
     {
+      const Property& p = e.props[k];
+      const bool isDouble = p.type == "double" || p.type == "float64";
+      const int a = !(xyz && e.name == "vertex" && p.countType.empty() && isDouble && k < 16) ? -1
+        : p.name == "x"                                                                      ? 0
+        : p.name == "y"                                                                      ? 1
+        : p.name == "z"                                                                      ? 2
+                                                                                             : -1;
+      if (a >= 0 && row != static_cast<size_t>(-1))
+      {
+        axis[k] = a;
+        at[a] = row;
+        found |= 1 << a;
+      }
       row = (row == static_cast<size_t>(-1) || !p.countType.empty()) ? static_cast<size_t>(-1) : row + p.item.size;
+    }
+    const bool keep = found == 7;
+    if (keep)
+    {
+      xyz->assign(3 * static_cast<size_t>(e.count), 0.0);
     }
     if (binary && row != static_cast<size_t>(-1))
     {
+      const Type f64 = TypeOf("double");
       for (long long i = 0; i < e.count; ++i)
       {
-        if (row && !bytes.Get(row))
+        const unsigned char* r = row ? bytes.Get(row) : nullptr;
+        if (row && !r)
         {
           throw Error("truncated: " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) +
               " is missing",
             path);
+        }
+        for (int a = 0; keep && a < 3; ++a)
+        {
+          (*xyz)[3 * static_cast<size_t>(i) + a] = Decode(r + at[a], f64, bigEndian);
         }
       }
       continue;
@@ -207,14 +237,20 @@ void CheckBody(std::istream& in, const std::vector<Element>& elements, bool bina
         }
         return true;
       };
-      for (const Property& p : e.props)
+      for (size_t k = 0; k < e.props.size(); ++k)
       {
+        const Property& p = e.props[k];
         double v = 0;
         if (p.countType.empty())
         {
-          if (!next(p.item, false, v))
+          const int a = keep && k < 16 ? axis[k] : -1;
+          if (!next(p.item, a >= 0, v))
           {
             throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " lacks '" + p.name + "'", path);
+          }
+          if (a >= 0)
+          {
+            (*xyz)[3 * static_cast<size_t>(i) + a] = v;
           }
           continue;
         }
@@ -247,7 +283,7 @@ void CheckBody(std::istream& in, const std::vector<Element>& elements, bool bina
 }
 } // namespace
 
-void CheckPly(const std::string& path)
+void CheckPly(const std::string& path, std::vector<double>* xyz)
 {
   std::ifstream in(path, std::ios::binary);
   if (!in)
@@ -352,6 +388,10 @@ void CheckPly(const std::string& path)
         " body bytes, file holds " + std::to_string(size - bodyStart),
       path);
   }
-  CheckBody(in, layout, binary, bigEndian, path);
+  if (xyz)
+  {
+    xyz->clear();
+  }
+  CheckBody(in, layout, binary, bigEndian, path, xyz);
 }
 } // namespace art

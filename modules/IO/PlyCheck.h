@@ -7,11 +7,14 @@
 #include "AdaptiveRTIOModule.h"
 
 #include <string>
+#include <vector>
 
 namespace art
 {
-/// Throws art::Error naming `path` when the file is not a well-formed PLY.
-ADAPTIVERTIO_EXPORT void CheckPly(const std::string& path);
+/// Throws art::Error naming `path` when the file is not a well-formed PLY. When the vertices'
+/// x, y and z are doubles and `xyz` is given, it receives them (x y z per vertex; else it is left
+/// empty): vtkPLYReader keeps only floats.
+ADAPTIVERTIO_EXPORT void CheckPly(const std::string& path, std::vector<double>* xyz = nullptr);
 } // namespace art
 
 #endif

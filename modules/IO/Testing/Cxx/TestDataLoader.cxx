@@ -191,6 +191,57 @@ TEST(DataLoader, ObjKeepsDoublePrecision)
   EXPECT_EQ(p[1], -30000000.25);
 }
 
+// A PLY of double coordinates (CloudCompare and photogrammetry exports in UTM) kept only
+// vtkPLYReader's floats: a 0.25 m triangle 2.5e7 m out collapsed ("has no triangles to render").
+TEST(DataLoader, PlyKeepsDoubleCoordinates)
+{
+  const double pts[4][3] = { { 25000000.125, -30000000.5, 1000.25 }, { 25000000.375, -30000000.5, 1000.25 },
+    { 25000000.125, -30000000.25, 1000.25 }, { 25000000.375, -30000000.25, 1000.5 } };
+  const std::string header = "element vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
+                             "property uchar flag\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string ascii = std::string(ART_TEST_OUTPUT) + "/far-ascii.ply";
+  {
+    std::ofstream f(ascii);
+    f << "ply\nformat ascii 1.0\n" << header;
+    f.precision(17);
+    for (const auto& p : pts)
+    {
+      f << p[0] << " " << p[1] << " " << p[2] << " 7\n";
+    }
+    f << "3 0 1 2\n3 1 3 2\n";
+  }
+  const std::string binary = std::string(ART_TEST_OUTPUT) + "/far-binary.ply";
+  {
+    std::ofstream f(binary, std::ios::binary);
+    f << "ply\nformat binary_little_endian 1.0\n" << header;
+    for (const auto& p : pts)
+    {
+      f.write(reinterpret_cast<const char*>(p), 24);
+      f.put(7);
+    }
+    for (const int face : { 0, 1 })
+    {
+      const int ids[2][3] = { { 0, 1, 2 }, { 1, 3, 2 } };
+      f.put(3);
+      f.write(reinterpret_cast<const char*>(ids[face]), 12);
+    }
+  }
+  for (const std::string& path : { ascii, binary })
+  {
+    auto pd = art::LoadSurface(path);
+    ASSERT_EQ(pd->GetNumberOfPoints(), 4) << path;
+    EXPECT_EQ(pd->GetNumberOfPolys(), 2) << path;
+    for (int i = 0; i < 4; ++i)
+    {
+      double p[3];
+      pd->GetPoint(i, p);
+      EXPECT_EQ(p[0], pts[i][0]) << path;
+      EXPECT_EQ(p[1], pts[i][1]) << path;
+      EXPECT_EQ(p[2], pts[i][2]) << path;
+    }
+  }
+}
+
 TEST(DataLoader, WrongKindForTheCall)
 {
   EXPECT_THROW(art::LoadSurface(Data + "ct-head-128.mha"), art::Error);
