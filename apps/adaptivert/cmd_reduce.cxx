@@ -50,7 +50,7 @@ void Declare(cli::Options& o)
     "stop when the error (opacity-weighted with --tf) is at most E data units (E% of the scalar range)");
   o.Add("metric", 0, "rms|max", "which error --max-error bounds", "rms");
   o.Add("levels", 0, "LIST", "also write nested levels from the same run, e.g. 0.01%,0.1%,5000: OUT_<n>.vtu");
-  o.Add("refine-fraction", 0, "F", "tet growth per refinement level (0: 0.5 with bisection, 0.2 with edge)", "0");
+  o.Add("refine-fraction", 0, "F", "tet growth per refinement level (0: automatic, 0.5 then 0.2 near a budget with bisection, 0.2 with edge)", "0");
   o.Add("tolerance", 0, "T", "conjugate-gradient relative residual", "1e-8");
   o.Add("refinement", 0, "bisection|edge",
     "bisection: newest-vertex, near-regular tets; edge: split the edges that remove the most error "

@@ -228,7 +228,15 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   };
   std::vector<double> priority;
   const bool edgeSplit = Opt.Refine == ReducerOptions::Refinement::EdgeSplit;
-  const double growth = Opt.RefineFraction > 0 ? Opt.RefineFraction : edgeSplit ? 0.2 : 0.5;
+  // Automatic growth: bisection takes half a level while far from the next budget (cheap levels,
+  // each still a voxel pass when weighted) and a fifth over the last factor of 4 before it.
+  auto growthTowards = [&](long long nt, long long goal) {
+    if (Opt.RefineFraction > 0)
+    {
+      return Opt.RefineFraction;
+    }
+    return edgeSplit || nt * 4 > goal ? 0.2 : 0.5;
+  };
   std::vector<EdgeSplitMoments> edgeMoments;
   for (int level = 0;; ++level)
   {
@@ -291,7 +299,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     }
     const long long goal = bi < budgets.size() ? std::min(cap, budgets[bi]) : cap;
     const long long next = std::min(goal,
-      std::max(nt + 1, static_cast<long long>(std::ceil(nt * (1.0 + growth)))));
+      std::max(nt + 1, static_cast<long long>(std::ceil(nt * (1.0 + growthTowards(nt, goal))))));
 
     std::vector<int> cand;
     const double minEdge2 = Opt.MinEdgeVoxels * Opt.MinEdgeVoxels;

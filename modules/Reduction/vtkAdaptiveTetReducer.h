@@ -69,7 +69,8 @@ public:
 
   /**
    * Growth of the tet count per refinement level (0.2: 20% more tets per re-fit). 0 (the
-   * default): 0.5 with bisection, 0.2 with edge splits.
+   * default): with bisection 0.5 while under a quarter of the next budget, then 0.2; 0.2 with
+   * edge splits.
    */
   vtkSetClampMacro(RefineFraction, double, 0.0, 4.0);
   vtkGetMacro(RefineFraction, double);
