@@ -83,14 +83,30 @@ int ExpectClosedForm(const TetMesh& m, const Image& img, const Camera& cam, doub
 }
 } // namespace
 
+namespace
+{
+// The linear field on a 1 x 1 x 1 box of 4 x 3 x 5 cubes, its transfer function's range, and
+// settings without early termination: what the closed-form tests render.
+constexpr double LinearLo = -0.2, LinearHi = 0.9;
+TetMesh LinearBox()
+{
+  return fixtures::GridMesh(4, 3, 5, { 0, 0, 0 }, { 0.25, 1.0 / 3, 0.2 }, Linear, 6);
+}
+RenderSettings LinearSettings()
+{
+  RenderSettings s;
+  s.tf = LinearTF(LinearLo, LinearHi);
+  s.earlyTermination = 2.0;
+  return s;
+}
+} // namespace
+
 TEST(TetRayCast, LinearFieldMatchesClosedForm)
 {
-  const TetMesh m = fixtures::GridMesh(4, 3, 5, { 0, 0, 0 }, { 0.25, 1.0 / 3, 0.2 }, Linear, 6);
+  const TetMesh m = LinearBox();
   ASSERT_TRUE(m.IsConvex());
-  const double lo = -0.2, hi = 0.9;
-  RenderSettings s;
-  s.tf = LinearTF(lo, hi);
-  s.earlyTermination = 2.0;
+  const double lo = LinearLo, hi = LinearHi;
+  RenderSettings s = LinearSettings();
   const TetRayCaster rc(m, s);
   const Camera cam = ViewOf(m.Bounds(), 48, 40, 30, 20);
   Image img;
@@ -104,11 +120,9 @@ TEST(TetRayCast, RaysEndAtOpaqueGeometry)
 {
   // Each ray ends on a sphere through the box (as opaque geometry drawn before the volume would
   // end it): the closed form up to there. Rays that miss the sphere run to the far side.
-  const TetMesh m = fixtures::GridMesh(4, 3, 5, { 0, 0, 0 }, { 0.25, 1.0 / 3, 0.2 }, Linear, 6);
-  const double lo = -0.2, hi = 0.9;
-  RenderSettings s;
-  s.tf = LinearTF(lo, hi);
-  s.earlyTermination = 2.0;
+  const TetMesh m = LinearBox();
+  const double lo = LinearLo, hi = LinearHi;
+  RenderSettings s = LinearSettings();
   const Camera cam = ViewOf(m.Bounds(), 48, 40, 30, 20);
   std::vector<double> ends(48 * 40, std::numeric_limits<double>::infinity());
   const Vec3 c(0.5, 0.4, 0.6);
@@ -144,11 +158,9 @@ TEST(TetRayCast, CameraInsideTheMesh)
 {
   // Rays that start inside are integrated from their origin: perspective (every ray from the
   // eye's tet) and parallel (origins on a plane through the mesh), each against the closed form.
-  const TetMesh m = fixtures::GridMesh(4, 3, 5, { 0, 0, 0 }, { 0.25, 1.0 / 3, 0.2 }, Linear, 6);
-  const double lo = -0.2, hi = 0.9;
-  RenderSettings s;
-  s.tf = LinearTF(lo, hi);
-  s.earlyTermination = 2.0;
+  const TetMesh m = LinearBox();
+  const double lo = LinearLo, hi = LinearHi;
+  RenderSettings s = LinearSettings();
   const TetRayCaster rc(m, s);
   for (bool parallel : { false, true })
   {
