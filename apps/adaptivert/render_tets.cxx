@@ -196,6 +196,8 @@ int Run(const cli::Options& o, const std::string& input)
             ro.ScalarOpacity.emplace_back(n.s, n.alpha);
           }
         }
+        // Maximum intensity shows the fit's overshoot at sharp edges as bright facets.
+        ro.ClampToVoxels = settings.mode == art::RenderSettings::Mode::MaxIntensity;
         const art::VoxelVolume vv = art::VolumeFromImage(volume, input);
         auto levels = art::TetReducer(ro).Run(vv, &progress);
         if (levels.empty())
@@ -205,7 +207,8 @@ int Run(const cli::Options& o, const std::string& input)
         const art::ReducedMesh& r = levels.back();
         mesh = cli::ToTetMesh(r);
         std::ostringstream ss;
-        ss << "adaptive tets (" << (r.Weighted ? "opacity-weighted " : "") << "least-squares reduction, RMS error "
+        ss << "adaptive tets (" << (r.Weighted ? "opacity-weighted " : "") << "least-squares reduction"
+           << (ro.ClampToVoxels ? " clamped to the voxel range" : "") << ", RMS error "
            << r.Rms << ", max " << r.Max;
         if (r.Weighted)
         {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace art
 {
@@ -351,6 +352,43 @@ void LeastSquaresFit::EdgeMoments(const BisectionMesh& mesh, const std::vector<i
         pass(Volume.Float.data());
       }
       out[t] = m;
+    }
+  });
+}
+
+void LeastSquaresFit::VertexVoxelRange(
+  const BisectionMesh& mesh, std::vector<double>& lo, std::vector<double>& hi) const
+{
+  const int nt = mesh.NumberOfTets(), nv = mesh.NumberOfVertices();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> tlo(nt, inf), thi(nt, -inf);
+  ForEachRange(nt, 64, [&](long long t0, long long t1, Counters&) {
+    for (long long t = t0; t < t1; ++t)
+    {
+      LatticePoint P[4];
+      Corners(mesh, static_cast<int>(t), P);
+      TetRaster r;
+      r.Setup(P);
+      double a = inf, b = -inf;
+      r.ForEachVoxel(Volume.Dims, [&](long long idx, const double*) {
+        const double f = Volume.Value(idx);
+        a = std::min(a, f);
+        b = std::max(b, f);
+      });
+      tlo[t] = a;
+      thi[t] = b;
+    }
+  });
+  lo.assign(nv, inf);
+  hi.assign(nv, -inf);
+  ForEachRange(nv, 1024, [&](long long v0, long long v1, Counters&) {
+    for (long long v = v0; v < v1; ++v)
+    {
+      for (int t : mesh.TetsAround(static_cast<int>(v)))
+      {
+        lo[v] = std::min(lo[v], tlo[t]);
+        hi[v] = std::max(hi[v], thi[t]);
+      }
     }
   });
 }

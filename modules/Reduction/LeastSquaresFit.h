@@ -81,6 +81,10 @@ public:
   /// weighted errors (one pass over the voxels).
   VoxelErrorReport VoxelErrors(const BisectionMesh& mesh, const std::vector<double>& x) const;
 
+  /// Per vertex, the smallest and largest voxel value among the voxels its tets own (the
+  /// support of its hat function); +inf / -inf for a vertex whose tets own none. One voxel pass.
+  void VertexVoxelRange(const BisectionMesh& mesh, std::vector<double>& lo, std::vector<double>& hi) const;
+
   /// EdgeSplitMoments of the listed tets into out[t] (sized to the mesh). With an importance,
   /// `fit` (vertex values, Extend-ed) is where the weights are taken, as in UpdateMoments.
   void EdgeMoments(const BisectionMesh& mesh, const std::vector<int>& tets, std::vector<EdgeSplitMoments>& out,

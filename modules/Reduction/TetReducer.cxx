@@ -51,9 +51,18 @@ void TetReducer::CoarseGrid(const VoxelVolume& volume, long long tets, int cubes
 namespace
 {
 ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const LeastSquaresFit& fit,
-  const std::vector<double>& x)
+  std::vector<double> x, bool clamp)
 {
   ReducedMesh out;
+  if (clamp)
+  {
+    std::vector<double> lo, hi;
+    fit.VertexVoxelRange(mesh, lo, hi);
+    for (std::size_t v = 0; v < lo.size(); ++v)
+    {
+      x[v] = lo[v] <= hi[v] ? std::min(hi[v], std::max(lo[v], x[v])) : x[v];
+    }
+  }
   VoxelErrorReport e = fit.VoxelErrors(mesh, x);
   out.TetRms = std::move(e.TetRms);
   out.TetMax = std::move(e.TetMax);
@@ -199,7 +208,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
 
   std::vector<ReducedMesh> out;
   auto emit = [&](long long budget, bool reached, int level) {
-    ReducedMesh m = Snapshot(volume, mesh, fit, x);
+    ReducedMesh m = Snapshot(volume, mesh, fit, x, Opt.ClampToVoxels);
     m.TargetTets = budget;
     m.TargetError = errorBound;
     m.TargetReached = reached;

@@ -68,6 +68,10 @@ struct ReducerOptions
   double MinEdgeVoxels = 2.0;    ///< a refinement edge shorter than this (in voxels) is never cut
   Refinement Refine = Refinement::Bisection;
   int CoarseTets = 0;            ///< size of the coarse Kuhn mesh (0: from the smallest budget)
+  /// Output values clamped to the range of the voxels under each vertex's tets: no overshoot
+  /// beyond the data at sharp edges (maximum-intensity projection shows it as bright facets), at
+  /// some cost in L2 error. The fit itself, and so the levels after, are not changed.
+  bool ClampToVoxels = false;
   /// Reduce for what a transfer function shows: (scalar, opacity) nodes of its scalar-opacity
   /// function (empty: plain L2). The fit, the refinement choice and an error target then use
   /// OpacityImportance's weighted error: a voxel weighs by the opacity slope it (or its fit) meets.

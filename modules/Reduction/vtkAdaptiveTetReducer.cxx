@@ -105,6 +105,7 @@ int vtkAdaptiveTetReducer::RequestData(
   opt.ErrorMetric = this->ErrorMetric == MAX ? art::ReducerOptions::Metric::Max : art::ReducerOptions::Metric::RMS;
   opt.ErrorRelative = this->ErrorRelative;
   opt.RefineFraction = this->RefineFraction;
+  opt.ClampToVoxels = this->ClampToVoxels;
   opt.SolverTolerance = this->SolverTolerance;
   opt.Refine = this->Refinement == EDGE_SPLIT ? art::ReducerOptions::Refinement::EdgeSplit
                                               : art::ReducerOptions::Refinement::Bisection;
@@ -185,6 +186,7 @@ void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ErrorMetric: " << (this->ErrorMetric == MAX ? "MAX" : "RMS") << "\n";
   os << indent << "ErrorRelative: " << this->ErrorRelative << "\n";
   os << indent << "RefineFraction: " << this->RefineFraction << "\n";
+  os << indent << "ClampToVoxels: " << this->ClampToVoxels << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "Refinement: " << (this->Refinement == EDGE_SPLIT ? "EDGE_SPLIT" : "BISECTION") << "\n";
   os << indent << "Levels: " << this->Levels.size() << "\n";

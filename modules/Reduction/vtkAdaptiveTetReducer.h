@@ -76,6 +76,15 @@ public:
   vtkGetMacro(RefineFraction, double);
 
   /**
+   * Clamp each output value to the range of the voxels under its vertex's tets (default off):
+   * no overshoot beyond the data at sharp edges, which maximum-intensity projection shows as
+   * bright facets, for a slightly larger L2 error.
+   */
+  vtkSetMacro(ClampToVoxels, bool);
+  vtkGetMacro(ClampToVoxels, bool);
+  vtkBooleanMacro(ClampToVoxels, bool);
+
+  /**
    * Relative residual at which conjugate gradients stops.
    */
   vtkSetClampMacro(SolverTolerance, double, 1e-15, 1e-2);
@@ -150,6 +159,7 @@ protected:
   double TargetError = -1.0;
   int ErrorMetric = RMS;
   bool ErrorRelative = false;
+  bool ClampToVoxels = false;
   double RefineFraction = 0.0;
   double SolverTolerance = 1e-8;
   int Refinement = BISECTION;

@@ -18,6 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 
@@ -135,6 +137,61 @@ TEST(TetReducer, BudgetsBeyondTheVoxelsStopAtFullResolution)
   }
   EXPECT_EQ(out[1].TargetTets, 500000);
   EXPECT_EQ(out[2].TargetTets, 1000000);
+}
+
+TEST(TetReducer, ClampToVoxelsRemovesTheOvershootAtAJump)
+{
+  // A ball of 100 in air of 0: the least-squares fit overshoots on both sides of the jump.
+  const int d[3] = { 24, 24, 24 };
+  const double sp[3] = { 1, 1, 1 }, o[3] = { 0, 0, 0 };
+  auto img = Field(d, sp, o, [](double x, double y, double z) {
+    return (x - 11.3) * (x - 11.3) + (y - 12.1) * (y - 12.1) + (z - 11.7) * (z - 11.7) < 49 ? 100.0 : 0.0;
+  });
+  const auto vol = art::VolumeFromImage(img);
+  art::ReducerOptions opt;
+  opt.TargetTets = 3000;
+  const art::ReducedMesh plain = art::TetReducer(opt).Run(vol).back();
+  opt.ClampToVoxels = true;
+  const art::ReducedMesh clamped = art::TetReducer(opt).Run(vol).back();
+  ExpectValid(clamped);
+  ASSERT_EQ(clamped.Tets, plain.Tets) << "clamping changes the values only";
+  const auto [mn, mx] = std::minmax_element(plain.Values.begin(), plain.Values.end());
+  ASSERT_TRUE(*mx > 100.5 || *mn < -0.5) << "the plain fit should overshoot";
+  // Each clamped value lies within the voxels under the bounding box of the vertex's tets (a box
+  // that holds every voxel its tets own), and is their value where they all hold one.
+  const std::size_t nv = clamped.Values.size();
+  std::vector<std::array<double, 6>> box(nv, { { 1e300, -1e300, 1e300, -1e300, 1e300, -1e300 } });
+  for (std::size_t t = 0; t < clamped.Tets.size() / 4; ++t)
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        for (int k = 0; k < 3; ++k)
+        {
+          auto& bx = box[clamped.Tets[4 * t + a]];
+          const double c = clamped.Points[3 * clamped.Tets[4 * t + b] + k];
+          bx[2 * k] = std::min(bx[2 * k], c);
+          bx[2 * k + 1] = std::max(bx[2 * k + 1], c);
+        }
+  int changed = 0;
+  for (std::size_t v = 0; v < nv; ++v)
+  {
+    double lo = 1e300, hi = -1e300;
+    for (int k = static_cast<int>(std::ceil(box[v][4])); k <= box[v][5]; ++k)
+      for (int j = static_cast<int>(std::ceil(box[v][2])); j <= box[v][3]; ++j)
+        for (int i = static_cast<int>(std::ceil(box[v][0])); i <= box[v][1]; ++i)
+        {
+          const double f = vol.Value(i + d[0] * (j + d[1] * static_cast<long long>(k)));
+          lo = std::min(lo, f);
+          hi = std::max(hi, f);
+        }
+    EXPECT_GE(clamped.Values[v], lo - 1e-9) << v;
+    EXPECT_LE(clamped.Values[v], hi + 1e-9) << v;
+    if (lo == hi)
+    {
+      EXPECT_EQ(clamped.Values[v], lo) << v << ": all its voxels hold " << lo;
+    }
+    changed += clamped.Values[v] != plain.Values[v] ? 1 : 0;
+  }
+  EXPECT_GT(changed, 10);
 }
 
 TEST(TetReducer, DeterministicForAnyThreadCount)

@@ -151,6 +151,19 @@ assert runs[True][0] <= runs[False][0], runs
 assert runs[True][2] < 0.5 * runs[True][1], runs
 assert runs[True][1] > runs[False][1], runs  # the plain error pays for what is not seen
 
+# ClampToVoxels keeps every output value inside the input's range (the plain fit overshoots it).
+lo, hi = ripples.GetPointData().GetScalars().GetRange()
+ranges = {}
+for clamp in (False, True):
+    r = adaptivert.vtkAdaptiveTetReducer()
+    r.SetInputData(ripples)
+    r.SetTargetTets(1500)
+    r.SetClampToVoxels(clamp)
+    r.Update()
+    ranges[clamp] = r.GetOutput().GetPointData().GetScalars().GetRange()
+assert ranges[False][0] < lo - 1e-6 or ranges[False][1] > hi + 1e-6, (ranges, lo, hi)
+assert ranges[True][0] >= lo and ranges[True][1] <= hi, (ranges, lo, hi)
+
 # An empty opacity function is a clear error.
 messages = []
 r = adaptivert.vtkAdaptiveTetReducer()
