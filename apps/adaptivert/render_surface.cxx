@@ -181,6 +181,29 @@ int Run(const cli::Options& o, const std::string& input)
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.End();
   bar.Finish();
+  // An image of background only exits 0 like any other: say why when we can. A flat scene (a
+  // floor plan, a terrain tile in z = 0) is seen edge-on from the default front view.
+  long long covered = 0;
+  for (std::size_t i = 3; i < img.Pixels().size(); i += 4)
+  {
+    covered += img.Pixels()[i] > 0.f;
+  }
+  std::string note;
+  if (covered == 0)
+  {
+    // Flat along an axis that the view direction is square to: every ray runs beside the plane.
+    const art::Vec3 e = bounds.hi - bounds.lo, f = Normalize(cam.Forward());
+    const double ext[3] = { e.x, e.y, e.z }, dir[3] = { f.x, f.y, f.z };
+    int flat = -1;
+    for (int a = 0; a < 3; ++a)
+    {
+      flat = (ext[a] <= 1e-6 * Length(e) && std::abs(dir[a]) < 1e-6) ? a : flat;
+    }
+    const char* hint[3] = { "--azimuth 90 looks at it", "--azimuth 90 looks at it", "--elevation 90 looks from above" };
+    note = flat >= 0 ? std::string("no surface is in view: the scene is flat in ") + "xyz"[flat] + " and seen edge-on (" +
+        hint[flat] + ")"
+                     : std::string("no surface is in view (the image is background only)");
+  }
   img.CompositeOver({ view.background[0], view.background[1], view.background[2] });
   art::WriteImage(img, view.output);
 
@@ -195,6 +218,11 @@ int Run(const cli::Options& o, const std::string& input)
     j.Set("mrays_per_second", mrays).Set("memory_mb", mb).Set("threads", art::GetThreadCount());
     j.Set("voxels_per_ray", c.PerRay(c.voxelsVisited)).Set("triangles_per_ray", c.PerRay(c.trianglesTested));
     j.Set("lights", static_cast<long long>(s.lights.size())).Set("opacity", s.opacity);
+    j.Set("covered_pixels", covered);
+    if (!note.empty())
+    {
+      j.Set("note", note);
+    }
     std::printf("%s\n", j.Str().c_str());
     return cli::ExitOk;
   }
@@ -206,6 +234,10 @@ int Run(const cli::Options& o, const std::string& input)
     static_cast<unsigned long long>(c.rays), mrays, art::GetThreadCount());
   std::printf("work         %.1f voxels visited, %.1f triangles tested per ray\n", c.PerRay(c.voxelsVisited),
     c.PerRay(c.trianglesTested));
+  if (!note.empty())
+  {
+    std::printf("note         %s\n", note.c_str());
+  }
   std::printf("output       %s\n", view.output.c_str());
   return cli::ExitOk;
 }
