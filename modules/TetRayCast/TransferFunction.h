@@ -5,8 +5,9 @@
 // Opacity to extinction: VTK's scalar opacity alpha is the opacity of a slab ScalarOpacityUnitDistance
 // (u) thick, so the extinction coefficient is tau = -ln(1 - alpha) / u (per world unit). We convert at
 // every control point and keep tau (not alpha) linear between them, which is what makes the exact
-// segment rule closed-form; alpha = 1 is clamped to 1 - 1e-6. Colour functions are read as RGB,
-// linear between nodes (VTK's default midpoint 0.5 / sharpness 0); outside the nodes values clamp.
+// segment rule closed-form; alpha = 1 is clamped to 1 - 1e-6. Where VTK's functions are not linear
+// between their nodes (a colour space other than RGB, midpoints, sharpness, a log scale) FromVTK
+// adds nodes until linear pieces follow them to 1/500; outside the nodes values clamp.
 #ifndef art_TransferFunction_h
 #define art_TransferFunction_h
 

@@ -10,6 +10,7 @@
 #include <vtkPiecewiseFunction.h>
 #include <vtkVolumeProperty.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -210,6 +211,47 @@ TEST(TransferFunction, OpacityToExtinctionAndVTKRoundTrip)
   tf.ToVTK(back);
   EXPECT_NEAR(back->GetScalarOpacity()->GetValue(50), 0.5, 1e-12);
   EXPECT_EQ(back->GetScalarOpacityUnitDistance(), 2.0);
+}
+
+TEST(TransferFunction, FollowsVTKColourSpacesMidpointsAndSharpness)
+{
+  // ParaView's default: a diverging colour map (white in the middle, not RGB's purple), and an
+  // opacity with a midpoint and some sharpness. The transfer function must match VTK's own
+  // functions everywhere, not only at their nodes.
+  vtkNew<vtkVolumeProperty> p;
+  vtkNew<vtkColorTransferFunction> c;
+  vtkNew<vtkPiecewiseFunction> o;
+  c->SetColorSpaceToDiverging();
+  c->AddRGBPoint(-1, 0.23, 0.30, 0.75);
+  c->AddRGBPoint(1, 0.71, 0.02, 0.15);
+  o->AddPoint(-1, 0.0, 0.25, 0.0);
+  o->AddPoint(0.2, 0.6, 0.5, 0.6);
+  o->AddPoint(1, 0.9);
+  p->SetColor(c);
+  p->SetScalarOpacity(o);
+  const TransferFunction tf = TransferFunction::FromVTK(p);
+  EXPECT_GT(tf.Nodes().size(), 6u);
+  EXPECT_LE(tf.Nodes().size(), 3u + 2u * 256u);
+  double worstRgb = 0, worstAlpha = 0;
+  for (int i = 0; i <= 1000; ++i)
+  {
+    const double x = -1 + 2.0 * i / 1000;
+    double want[3], rgb[3], tau;
+    c->GetColor(x, want);
+    tf.Evaluate(x, rgb, tau);
+    for (int k = 0; k < 3; ++k)
+      worstRgb = std::max(worstRgb, std::fabs(rgb[k] - want[k]));
+    worstAlpha = std::max(worstAlpha, std::fabs(tf.Alpha(x) - o->GetValue(x)));
+  }
+  EXPECT_LT(worstRgb, 5e-3);
+  EXPECT_LT(worstAlpha, 5e-3);
+  // Plain RGB functions keep exactly their nodes.
+  c->SetColorSpaceToRGB();
+  vtkNew<vtkPiecewiseFunction> linear;
+  linear->AddPoint(-1, 0.0);
+  linear->AddPoint(1, 0.5);
+  p->SetScalarOpacity(linear);
+  EXPECT_EQ(TransferFunction::FromVTK(p).Nodes().size(), 2u);
 }
 
 TEST(TransferFunction, FileAndPresetErrors)
