@@ -48,7 +48,7 @@ void Declare(cli::Options& o)
   o.Add("array", 0, "NAME", "point (or cell) array to render (default: the active scalars)");
   o.Add("tf", 0, "NAME|FILE",
     "transfer function: a preset (ct-skin-bone, ct-bone, grey-ramp, constant) or a file of "
-    "'scalar r g b opacity' lines",
+    "'scalar r g b opacity' lines, or a ParaView preset exported as .json",
     "ct-skin-bone");
   o.Add("unit-distance", 0, "U",
     "world distance over which the transfer function's opacity applies (default: 1 for CT in Hounsfield "

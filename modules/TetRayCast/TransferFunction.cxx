@@ -11,6 +11,8 @@
 #include <vtkPiecewiseFunction.h>
 #include <vtkVolumeProperty.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -285,12 +287,114 @@ TransferFunction TransferFunction::Preset(const std::string& name, double lo, do
   return TransferFunction(std::move(n), unitDistance);
 }
 
+namespace
+{
+// A preset as ParaView's "Export" writes it: a list of one object (or the object) with
+// "RGBPoints" [x r g b ...], optional "ColorSpace" and optional "Points" [x opacity midpoint
+// sharpness ...]; without "Points", opacity ramps from 0 to 1 over the colour points' range, as
+// ParaView starts a volume's opacity. Read through VTK's own functions, so its colour spaces,
+// midpoints and sharpness are followed (FromVTK).
+TransferFunction FromParaViewPreset(std::istream& in, const std::string& path)
+{
+  nlohmann::json j;
+  try
+  {
+    j = nlohmann::json::parse(in);
+  }
+  catch (const nlohmann::json::exception& e)
+  {
+    throw Error(std::string("not a ParaView preset (JSON): ") + e.what(), path);
+  }
+  if (j.is_array())
+  {
+    if (j.size() != 1)
+    {
+      throw Error("holds " + std::to_string(j.size()) + " presets; export the one to use alone", path);
+    }
+    j = j[0];
+  }
+  if (!j.is_object())
+  {
+    throw Error("not a ParaView preset: expected an object with \"RGBPoints\"", path);
+  }
+  const std::string name = j.contains("Name") && j["Name"].is_string() ? j["Name"].get<std::string>() : "";
+  auto numbers = [&](const char* key) {
+    std::vector<double> v;
+    const auto& a = j[key];
+    if (!a.is_array() || a.size() % 4 != 0 || a.empty())
+    {
+      throw Error(std::string("\"") + key + "\" must be a non-empty list of 4 numbers per point", path);
+    }
+    for (const auto& x : a)
+    {
+      if (!x.is_number() || !std::isfinite(x.get<double>()))
+      {
+        throw Error(std::string("\"") + key + "\" holds something other than finite numbers", path);
+      }
+      v.push_back(x.get<double>());
+    }
+    return v;
+  };
+  if (!j.contains("RGBPoints"))
+  {
+    throw Error("preset '" + name + "' has no \"RGBPoints\" (categorical presets are not supported)", path);
+  }
+  const std::vector<double> rgb = numbers("RGBPoints");
+  vtkNew<vtkColorTransferFunction> ctf;
+  const std::string space = j.contains("ColorSpace") && j["ColorSpace"].is_string() ? j["ColorSpace"].get<std::string>() : "RGB";
+  if (space == "RGB")
+    ctf->SetColorSpaceToRGB();
+  else if (space == "HSV")
+    ctf->SetColorSpaceToHSV();
+  else if (space == "Lab")
+    ctf->SetColorSpaceToLab();
+  else if (space == "Lab/CIEDE2000")
+    ctf->SetColorSpaceToLabCIEDE2000();
+  else if (space == "Diverging")
+    ctf->SetColorSpaceToDiverging();
+  else if (space == "Step")
+    ctf->SetColorSpaceToStep();
+  else
+    throw Error("unknown \"ColorSpace\" '" + space + "'", path);
+  for (std::size_t i = 0; i < rgb.size(); i += 4)
+  {
+    ctf->AddRGBPoint(rgb[i], rgb[i + 1], rgb[i + 2], rgb[i + 3]);
+  }
+  vtkNew<vtkPiecewiseFunction> otf;
+  if (j.contains("Points"))
+  {
+    const std::vector<double> o = numbers("Points");
+    for (std::size_t i = 0; i < o.size(); i += 4)
+    {
+      otf->AddPoint(o[i], o[i + 1], o[i + 2], o[i + 3]);
+    }
+  }
+  else
+  {
+    double r[2];
+    ctf->GetRange(r);
+    otf->AddPoint(r[0], 0.0);
+    otf->AddPoint(r[1], 1.0);
+  }
+  vtkNew<vtkVolumeProperty> p;
+  p->SetColor(ctf);
+  p->SetScalarOpacity(otf);
+  return TransferFunction::FromVTK(p);
+}
+} // namespace
+
 TransferFunction TransferFunction::FromFile(const std::string& path)
 {
   std::ifstream in(path);
   if (!in)
   {
     throw Error("cannot open transfer-function file", path);
+  }
+  // A ParaView preset starts with '[' or '{'; our own format with a number or a comment.
+  in >> std::ws;
+  if (in.peek() == '[' || in.peek() == '{')
+  {
+    return FromParaViewPreset(in, path);
   }
   std::vector<Node> nodes;
   double unit = 1.0;

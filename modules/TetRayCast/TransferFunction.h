@@ -59,7 +59,9 @@ public:
   /// Preset with the unit distance PresetUnitDistance gives for `data` and its range [lo, hi].
   static TransferFunction PresetFor(const std::string& name, vtkDataSet* data, double lo, double hi);
   /// A text file, one node per line: "scalar r g b opacity" ('#' comments; optional first line
-  /// "unit-distance U"). Throws art::Error naming the file and line for anything malformed.
+  /// "unit-distance U"), or a ParaView preset as its "Export" writes it (JSON: "RGBPoints",
+  /// "ColorSpace", "Points" for the opacity, else a ramp from 0 to 1 over the colour points).
+  /// Throws art::Error naming the file (and line) for anything malformed.
   static TransferFunction FromFile(const std::string& path);
 
   /// Fills a vtkVolumeProperty with the same functions (for VTK's own mappers and the viewer).

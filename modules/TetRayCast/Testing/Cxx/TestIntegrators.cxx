@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <utility>
 
 using namespace art;
 
@@ -252,6 +253,63 @@ TEST(TransferFunction, FollowsVTKColourSpacesMidpointsAndSharpness)
   linear->AddPoint(1, 0.5);
   p->SetScalarOpacity(linear);
   EXPECT_EQ(TransferFunction::FromVTK(p).Nodes().size(), 2u);
+}
+
+TEST(TransferFunction, ParaViewPresetFiles)
+{
+  // What ParaView's preset "Export" writes: a list of one preset, diverging colours and an
+  // opacity with a midpoint.
+  const std::string dir = ART_TEST_OUTPUT;
+  const std::string file = dir + "/tf-paraview.json";
+  std::ofstream(file) << R"([ { "ColorSpace" : "Diverging", "Name" : "Cool to Warm", "NanColor" : [1, 1, 0],
+    "Points" : [ -1000, 0, 0.5, 0, 200, 0.3, 0.25, 0, 1500, 0.8, 0.5, 0 ],
+    "RGBPoints" : [ -1000, 0.23, 0.299, 0.754, 1500, 0.706, 0.016, 0.15 ] } ])";
+  const TransferFunction tf = TransferFunction::FromFile(file);
+  vtkNew<vtkColorTransferFunction> c;
+  c->SetColorSpaceToDiverging();
+  c->AddRGBPoint(-1000, 0.23, 0.299, 0.754);
+  c->AddRGBPoint(1500, 0.706, 0.016, 0.15);
+  vtkNew<vtkPiecewiseFunction> o;
+  o->AddPoint(-1000, 0, 0.5, 0);
+  o->AddPoint(200, 0.3, 0.25, 0);
+  o->AddPoint(1500, 0.8, 0.5, 0);
+  for (int i = 0; i <= 500; ++i)
+  {
+    const double x = -1000 + 5.0 * i;
+    double want[3], rgb[3], tau;
+    c->GetColor(x, want);
+    tf.Evaluate(x, rgb, tau);
+    for (int k = 0; k < 3; ++k)
+      ASSERT_NEAR(rgb[k], want[k], 5e-3) << x;
+    ASSERT_NEAR(tf.Alpha(x), o->GetValue(x), 5e-3) << x;
+  }
+  // Colour only: opacity ramps from 0 to 1 over the colour points.
+  std::ofstream(file) << R"({ "Name" : "grey", "RGBPoints" : [ 0, 0, 0, 0, 10, 1, 1, 1 ] })";
+  const TransferFunction grey = TransferFunction::FromFile(file);
+  EXPECT_NEAR(grey.Alpha(2.5), 0.25, 1e-12);
+  // Each malformed preset is one clear error naming the file.
+  const std::pair<const char*, const char*> bad[] = {
+    { R"([ { "RGBPoints" : [0, 0, 0, 0] }, { "RGBPoints" : [0, 0, 0, 0] } ])", "holds 2 presets" },
+    { R"([ { "Name" : "cats", "IndexedColors" : [1, 0, 0] } ])", R"(no "RGBPoints")" },
+    { R"({ "RGBPoints" : [0, 0, 0] })", "4 numbers per point" },
+    { R"({ "RGBPoints" : [0, 0, 0, "red"] })", "other than finite numbers" },
+    { R"({ "RGBPoints" : [0, 0, 0, 0], "ColorSpace" : "CMYK" })", R"(unknown "ColorSpace" 'CMYK')" },
+    { R"({ "RGBPoints" : [0, 0, 0, 0 )", "not a ParaView preset (JSON)" },
+  };
+  for (const auto& [text, why] : bad)
+  {
+    std::ofstream(file) << text;
+    try
+    {
+      TransferFunction::FromFile(file);
+      ADD_FAILURE() << "accepted " << text;
+    }
+    catch (const Error& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("tf-paraview.json"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(TransferFunction, FileAndPresetErrors)
