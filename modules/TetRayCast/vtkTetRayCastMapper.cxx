@@ -83,6 +83,57 @@ std::vector<double> RayEndsFromDepth(
   }
   return ends;
 }
+
+// Moves `cam` into the data's coordinates (the inverse of the volume's matrix): exact for
+// rotations, translations and uniform scales. False when the matrix scales its axes differently
+// (the parallel scale then takes their geometric mean).
+bool IntoData(vtkCamera* cam, vtkMatrix4x4* toWorld, vtkMatrix4x4* toData)
+{
+  double pos[4], fp[4], up[3], q[4];
+  cam->GetPosition(pos);
+  cam->GetFocalPoint(fp);
+  cam->GetViewUp(up);
+  pos[3] = fp[3] = 1.0;
+  toData->MultiplyPoint(pos, q);
+  cam->SetPosition(q[0] / q[3], q[1] / q[3], q[2] / q[3]);
+  toData->MultiplyPoint(fp, q);
+  cam->SetFocalPoint(q[0] / q[3], q[1] / q[3], q[2] / q[3]);
+  double up4[4] = { up[0], up[1], up[2], 0.0 };
+  toData->MultiplyPoint(up4, q);
+  cam->SetViewUp(q[0], q[1], q[2]);
+  // Column lengths of the linear part: the scale along each axis.
+  double len[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    len[c] = std::sqrt(toWorld->GetElement(0, c) * toWorld->GetElement(0, c) +
+      toWorld->GetElement(1, c) * toWorld->GetElement(1, c) + toWorld->GetElement(2, c) * toWorld->GetElement(2, c));
+  }
+  cam->SetParallelScale(cam->GetParallelScale() / std::cbrt(len[0] * len[1] * len[2]));
+  const double lo = std::min(len[0], std::min(len[1], len[2])), hi = std::max(len[0], std::max(len[1], len[2]));
+  return hi <= lo * (1 + 1e-6);
+}
+
+// Depth of the image's quad: the nearest corner of the data's bounds `b`, as VTK's ray cast
+// mappers place it.
+double QuadDepth(vtkRenderer* ren, const double b[6], vtkMatrix4x4* toWorld)
+{
+  double aspect[2];
+  ren->ComputeAspect();
+  ren->GetAspect(aspect);
+  vtkMatrix4x4* m = ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect[0] / aspect[1], 0, 1);
+  double minZ = 1.0;
+  for (int k = 0; k < 8; ++k)
+  {
+    double p[4] = { b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)], 1.0 }, pw[4], q[4];
+    toWorld->MultiplyPoint(p, pw);
+    m->MultiplyPoint(pw, q);
+    if (q[3] != 0)
+    {
+      minZ = std::min(minZ, q[2] / q[3]);
+    }
+  }
+  return std::min(std::max(minZ, 0.0), 1.0);
+}
 } // namespace
 
 struct vtkTetRayCastMapper::Internals
@@ -229,34 +280,10 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   vtkMatrix4x4::Invert(toWorld, toData);
   vtkNew<vtkCamera> local;
   local->DeepCopy(ren->GetActiveCamera());
-  if (!toWorld->IsIdentity())
+  if (!toWorld->IsIdentity() && !IntoData(local, toWorld, toData) && !this->WarnedNonUniform)
   {
-    double pos[4], fp[4], up[3], q[4];
-    local->GetPosition(pos);
-    local->GetFocalPoint(fp);
-    local->GetViewUp(up);
-    pos[3] = fp[3] = 1.0;
-    toData->MultiplyPoint(pos, q);
-    local->SetPosition(q[0] / q[3], q[1] / q[3], q[2] / q[3]);
-    toData->MultiplyPoint(fp, q);
-    local->SetFocalPoint(q[0] / q[3], q[1] / q[3], q[2] / q[3]);
-    double up4[4] = { up[0], up[1], up[2], 0.0 };
-    toData->MultiplyPoint(up4, q);
-    local->SetViewUp(q[0], q[1], q[2]);
-    // Column lengths of the linear part: the scale along each axis.
-    double len[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      len[c] = std::sqrt(toWorld->GetElement(0, c) * toWorld->GetElement(0, c) +
-        toWorld->GetElement(1, c) * toWorld->GetElement(1, c) + toWorld->GetElement(2, c) * toWorld->GetElement(2, c));
-    }
-    local->SetParallelScale(local->GetParallelScale() / std::cbrt(len[0] * len[1] * len[2]));
-    const double lo = std::min(len[0], std::min(len[1], len[2])), hi = std::max(len[0], std::max(len[1], len[2]));
-    if (hi > lo * (1 + 1e-6) && !this->WarnedNonUniform)
-    {
-      this->WarnedNonUniform = true;
-      vtkWarningMacro("the vtkVolume's matrix scales its axes differently; rays are cast as if it were uniform");
-    }
+    this->WarnedNonUniform = true;
+    vtkWarningMacro("the vtkVolume's matrix scales its axes differently; rays are cast as if it were uniform");
   }
   const art::Camera cam = art::Camera::FromVTK(local, w, h);
   std::vector<double> ends;
@@ -289,25 +316,9 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   last->Modified();
 
-  // Depth of the quad: the nearest corner of the data's box, as VTK's ray cast mappers place it.
   double b[6];
   input->GetBounds(b);
-  double aspect[2];
-  ren->ComputeAspect();
-  ren->GetAspect(aspect);
-  vtkMatrix4x4* m = ren->GetActiveCamera()->GetCompositeProjectionTransformMatrix(aspect[0] / aspect[1], 0, 1);
-  double minZ = 1.0;
-  for (int k = 0; k < 8; ++k)
-  {
-    double p[4] = { b[k & 1], b[2 + ((k >> 1) & 1)], b[4 + ((k >> 2) & 1)], 1.0 }, pw[4], q[4];
-    toWorld->MultiplyPoint(p, pw);
-    m->MultiplyPoint(pw, q);
-    if (q[3] != 0)
-    {
-      minZ = std::min(minZ, q[2] / q[3]);
-    }
-  }
-  minZ = std::min(std::max(minZ, 0.0), 1.0);
+  const double minZ = QuadDepth(ren, b, toWorld);
   int mem[2] = { w, h }, view[2] = { vw, vh }, use[2] = { w, h }, origin[2] = { 0, 0 };
   this->Impl->Helper->SetPreMultipliedColors(1);
   this->Impl->Helper->RenderTexture(vol, ren, mem, view, use, origin, static_cast<float>(minZ), bytes.data());
