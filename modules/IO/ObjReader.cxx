@@ -7,7 +7,9 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdint>
@@ -55,6 +57,8 @@ struct Obj
   std::size_t Count[3] = { 0, 0, 0 };
   std::vector<Corner> Corners;
   std::vector<Cell> Cells;
+  std::vector<double> Colors; // r g b per vertex of "v x y z r g b" (photogrammetry exports)
+  std::size_t Colored = 0;
 };
 
 bool IsSpace(char c)
@@ -97,6 +101,24 @@ void ReadNumbers(const char* p, int need, int want, std::vector<double>& out, lo
   {
     out.push_back(0.0); // an optional v of "vt u"
   }
+}
+
+// Up to `most` numbers after the keyword into `out`; returns how many there were.
+int ParseUpTo(const char* p, double* out, int most)
+{
+  int n = 0;
+  for (; n < most; ++n)
+  {
+    p = SkipSpace(p);
+    char* end = nullptr;
+    out[n] = std::strtod(p, &end);
+    if (end == p)
+    {
+      break;
+    }
+    p = end;
+  }
+  return n;
 }
 
 // "v", "v/vt", "v//vn" or "v/vt/vn": 1-based or negative (counted back from the last defined).
@@ -202,7 +224,17 @@ Obj Parse(const std::string& path)
     const std::string key(k, p);
     if (key == "v")
     {
-      ReadNumbers(p, 3, 3, obj.Coords[V], start, path);
+      double v[7];
+      const int got = ParseUpTo(p, v, 7);
+      if (got < 3)
+      {
+        throw Error("line " + std::to_string(start) + ": expected 3 numbers, found " + std::to_string(got), path);
+      }
+      obj.Coords[V].insert(obj.Coords[V].end(), v, v + 3);
+      // Exactly six numbers: x y z r g b (four: x y z w).
+      const bool rgb = got == 6;
+      obj.Colors.insert(obj.Colors.end(), { rgb ? v[3] : 0.0, rgb ? v[4] : 0.0, rgb ? v[5] : 0.0 });
+      obj.Colored += rgb;
       ++obj.Count[V];
     }
     else if (key == "vt")
@@ -265,8 +297,27 @@ vtkSmartPointer<vtkPolyData> ReadObj(const std::string& path)
   vtkSmartPointer<vtkDataArray> attr[3] = { nullptr, keep[T] ? Attribute(T, "TCoords") : nullptr,
     keep[N] ? Attribute(N, "Normals") : nullptr };
   std::vector<vtkIdType> ids(obj.Corners.size());
+  // Vertex colours when every vertex has one, as 8-bit RGB scalars (0..1 values scaled by 255).
+  vtkSmartPointer<vtkUnsignedCharArray> rgb;
+  double colorScale = 255.0;
+  if (obj.Count[V] > 0 && obj.Colored == obj.Count[V])
+  {
+    rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    rgb->SetName("RGB");
+    rgb->SetNumberOfComponents(3);
+    colorScale = *std::max_element(obj.Colors.begin(), obj.Colors.end()) > 1.0 ? 1.0 : 255.0;
+  }
   auto addPoint = [&](const Corner& c) {
     const vtkIdType id = points->InsertNextPoint(&obj.Coords[V][3 * std::size_t(c[V])]);
+    if (rgb)
+    {
+      unsigned char value[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        value[k] = static_cast<unsigned char>(std::clamp(obj.Colors[3 * std::size_t(c[V]) + k] * colorScale + 0.5, 0.0, 255.0));
+      }
+      rgb->InsertNextTypedTuple(value);
+    }
     for (int f : { T, N })
     {
       if (attr[f])
@@ -332,6 +383,10 @@ vtkSmartPointer<vtkPolyData> ReadObj(const std::string& path)
   if (attr[N])
   {
     pd->GetPointData()->SetNormals(attr[N]);
+  }
+  if (rgb)
+  {
+    pd->GetPointData()->SetScalars(rgb);
   }
   return pd;
 }

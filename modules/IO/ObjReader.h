@@ -15,7 +15,8 @@ class vtkPolyData;
 
 namespace art
 {
-/// The surface in `path`, with double-precision points. Normals ("Normals") and texture
+/// The surface in `path`, with double-precision points; vertex colours ("v x y z r g b", 0..1 or
+/// 0..255) become 8-bit "RGB" point scalars when every vertex has one. Normals ("Normals") and texture
 /// coordinates ("TCoords") become point data only when every face corner has one; a point is
 /// then one (vertex, texture coordinate, normal) triple, so faces that share a vertex but not its
 /// normal meet at a crease. A face index that names nothing, a face of fewer than three

@@ -176,6 +176,30 @@ TEST(DataLoader, ObjNormalsSplitOnlyAtCreases)
   ExpectError(path, "line 2: expected 3 numbers, found 2");
 }
 
+// Photogrammetry exports (Meshroom, Agisoft) colour vertices as "v x y z r g b"; vtkOBJReader
+// dropped the colours. They become 8-bit RGB scalars (0..1 or 0..255 in the file), which render
+// and VTK's mappers draw; a file where some vertices lack a colour keeps none.
+TEST(DataLoader, ObjVertexColours)
+{
+  const std::string path = std::string(ART_TEST_OUTPUT) + "/colours.obj";
+  std::ofstream(path) << "v 0 0 0 1 0 0\nv 1 0 0 0 0.5 0\nv 0 1 0 0 0 1\nf 1 2 3\n";
+  auto pd = art::LoadSurface(path);
+  vtkDataArray* rgb = pd->GetPointData()->GetScalars();
+  ASSERT_NE(rgb, nullptr);
+  EXPECT_EQ(rgb->GetDataType(), VTK_UNSIGNED_CHAR);
+  EXPECT_EQ(rgb->GetNumberOfComponents(), 3);
+  EXPECT_EQ(rgb->GetComponent(0, 0), 255);
+  EXPECT_EQ(rgb->GetComponent(1, 1), 128);
+  EXPECT_EQ(rgb->GetComponent(2, 2), 255);
+  std::ofstream(path) << "v 0 0 0 255 0 0\nv 1 0 0 0 128 0\nv 0 1 0 0 0 255\nf 1 2 3\n";
+  pd = art::LoadSurface(path);
+  rgb = pd->GetPointData()->GetScalars();
+  ASSERT_NE(rgb, nullptr);
+  EXPECT_EQ(rgb->GetComponent(1, 1), 128);
+  std::ofstream(path) << "v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1 1\nf 1 2 3\n"; // one without, one with a w
+  EXPECT_EQ(art::LoadSurface(path)->GetPointData()->GetScalars(), nullptr);
+}
+
 // Survey and CAD exports sit far from the origin: vtkOBJReader kept float points, so a 1-unit
 // sphere 2.5e7 out lost every triangle to rounding ("has no triangles to render"). Points are double.
 TEST(DataLoader, ObjKeepsDoublePrecision)
