@@ -91,6 +91,8 @@ TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t, const std::
       c[a] = (*fit)[mesh.Tet(t)[a]];
     }
   }
+  bool allFlat = true;
+  double flatLo = -std::numeric_limits<double>::infinity(), flatHi = std::numeric_limits<double>::infinity();
   auto accumulate = [&](const auto* values) {
     r.ForEachVoxel(Volume.Dims, [&](long long idx, const double* l) {
       double f = values[idx], w = 1.0;
@@ -98,6 +100,9 @@ TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t, const std::
       {
         const double u = haveFit ? c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3] : f;
         w = Imp->Weight(idx, f, u);
+        allFlat = allFlat && Imp->Flat(idx, f, u);
+        flatLo = std::max(flatLo, Imp->FlatLo(idx));
+        flatHi = std::min(flatHi, Imp->FlatHi(idx));
       }
       if (m.Count++ == 0)
       {
@@ -131,6 +136,10 @@ TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t, const std::
   m.Regularize = m.Count < RegularizeBelow || plainDiag[0] < 0.5 || plainDiag[1] < 0.5 || plainDiag[2] < 0.5 ||
     plainDiag[3] < 0.5;
   m.MeanWeight = m.Count > 0 ? sumW / m.Count : 1.0;
+  m.AllFlat = Imp && allFlat;
+  m.FlatLo = flatLo;
+  m.FlatHi = flatHi;
+  m.Version = mesh.Version(t);
   const double S = static_cast<double>(BisectionMesh::Scale);
   m.Volume = static_cast<double>(r.SixVolume()) / 6.0 / (S * S * S);
   return m;
@@ -145,6 +154,43 @@ void LeastSquaresFit::UpdateMoments(const BisectionMesh& mesh, const std::vector
       Mom[tets[i]] = Gather(mesh, tets[i], fit);
     }
   });
+}
+
+long long LeastSquaresFit::Reweigh(const BisectionMesh& mesh, const std::vector<double>& fit)
+{
+  const int nt = mesh.NumberOfTets();
+  Mom.resize(static_cast<size_t>(nt));
+  std::vector<int> stale;
+  for (int t = 0; t < nt; ++t)
+  {
+    const TetMoments& m = Mom[t];
+    bool keep = m.AllFlat && m.Version == mesh.Version(t);
+    if (keep)
+    {
+      // The fit at a voxel is a convex combination of the corners (up to round-off in the
+      // barycentric weights, hence the margin): inside the flat interval, every voxel's weight
+      // is its flat weight again.
+      double lo = fit[mesh.Tet(t)[0]], hi = lo;
+      for (int a = 1; a < 4; ++a)
+      {
+        lo = std::min(lo, fit[mesh.Tet(t)[a]]);
+        hi = std::max(hi, fit[mesh.Tet(t)[a]]);
+      }
+      const double margin = 1e-9 * (std::max(std::fabs(lo), std::fabs(hi)) + 1.0);
+      keep = lo - margin > m.FlatLo && hi + margin < m.FlatHi;
+    }
+    if (!keep)
+    {
+      stale.push_back(t);
+    }
+  }
+  ForEachRange(static_cast<long long>(stale.size()), 64, [&](long long b, long long e, Counters&) {
+    for (long long i = b; i < e; ++i)
+    {
+      Mom[stale[i]] = Gather(mesh, stale[i], &fit);
+    }
+  });
+  return static_cast<long long>(stale.size());
 }
 
 int LeastSquaresFit::Solve(const BisectionMesh& mesh, std::vector<double>& x, double tolerance, int maxIterations)

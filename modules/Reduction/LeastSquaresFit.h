@@ -10,6 +10,7 @@
 #include "OpacityImportance.h"
 #include "VoxelVolume.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace art
@@ -24,6 +25,12 @@ struct TetMoments
   double MeanWeight = 1; ///< mean voxel weight, scales the regulariser to the weighted fit
   int Count = 0;        ///< voxel centres owned
   bool Regularize = false; ///< too few voxels to pin its corners: add the anchor term
+  /// Weighted: every voxel weighed its flat weight (OpacityImportance::Flat) when gathered, and
+  /// will again at any fit whose corner values stay inside (FlatLo, FlatHi), the intersection of
+  /// its voxels' flat intervals; the moments then do not change (Reweigh keeps them).
+  bool AllFlat = false;
+  double FlatLo = 0, FlatHi = 0;
+  uint32_t Version = UINT32_MAX; ///< the tet's BisectionMesh::Version when gathered
 };
 
 /// Errors over the voxels, plain and weighted (OpacityImportance::Error2; plain without weights).
@@ -69,6 +76,10 @@ public:
   /// Re-gathers the moments of the listed tets (new or replaced); sizes to the mesh. With an
   /// importance, `fit` (vertex values, Extend-ed to the mesh) is the point the weights are taken at.
   void UpdateMoments(const BisectionMesh& mesh, const std::vector<int>& tets, const std::vector<double>* fit = nullptr);
+  /// With an importance: brings every tet's moments to the weights at `fit` (vertex values,
+  /// Extend-ed), as UpdateMoments of all tets would, bit for bit, but gathers only the tets that
+  /// are new or replaced or whose voxels' weights can have changed. Returns the tets gathered.
+  long long Reweigh(const BisectionMesh& mesh, const std::vector<double>& fit);
   /// New vertices take their parents' values interpolated at their place on the edge: the
   /// previous fit, exactly, on the refined mesh.
   static void Extend(const BisectionMesh& mesh, std::vector<double>& x);

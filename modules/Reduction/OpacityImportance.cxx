@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace art
 {
@@ -120,10 +121,35 @@ void OpacityImportance::Prepare(const VoxelVolume& vol, double floor, int radius
   // The weight of a voxel whose fit stays inside its neighbourhood's range, as most do: the
   // reduction asks for it at every voxel of every level.
   W0.resize(Lo.size());
+  PL.resize(Lo.size());
+  PH.resize(Lo.size());
+  const float inf = std::numeric_limits<float>::infinity();
   ForEachRange(static_cast<long long>(W0.size()), 4096, [&](long long i0, long long i1, Counters&) {
     for (long long i = i0; i < i1; ++i)
     {
-      W0[i] = static_cast<float>(Scaled(MaxSlope(Lo[i], Hi[i])));
+      const double g0 = MaxSlope(Lo[i], Hi[i]);
+      W0[i] = static_cast<float>(Scaled(g0));
+      // MaxSlope(min(Lo, u), max(Hi, u)) stays g0 until u reaches a segment steeper than g0:
+      // below Lo, the highest end of one; above Hi, the lowest start of one (open bounds).
+      double pl = -std::numeric_limits<double>::infinity(), ph = std::numeric_limits<double>::infinity();
+      for (size_t k = 0; k + 1 < N.size(); ++k)
+      {
+        const double g = std::fabs(N[k + 1].second - N[k].second) / (N[k + 1].first - N[k].first);
+        if (g > g0 && N[k + 1].first < Lo[i])
+        {
+          pl = std::max(pl, N[k + 1].first);
+        }
+        if (g > g0 && N[k].first > Hi[i])
+        {
+          ph = std::min(ph, N[k].first);
+        }
+      }
+      // Floats rounded inwards, so that the open interval never holds a fit of another weight.
+      float fl = static_cast<float>(pl), fh = static_cast<float>(ph);
+      fl = std::isinf(pl) ? -inf : (fl < pl ? std::nextafter(fl, inf) : fl);
+      fh = std::isinf(ph) ? inf : (fh > ph ? std::nextafter(fh, -inf) : fh);
+      PL[i] = std::min(fl, Lo[i]);
+      PH[i] = std::max(fh, Hi[i]);
     }
   });
 }

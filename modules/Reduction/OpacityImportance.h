@@ -42,7 +42,7 @@ public:
   /// fit that strays into an opacity ramp (a ghost shell in empty space) weighs as much as the ramp.
   double Weight(long long i, double f, double fit) const
   {
-    if (fit >= Lo[i] && fit <= Hi[i] && f >= Lo[i] && f <= Hi[i])
+    if (Flat(i, f, fit))
     {
       return W0[i];
     }
@@ -50,6 +50,16 @@ public:
     const double hi = std::max<double>(std::max<double>(Hi[i], f), fit);
     return Scaled(MaxSlope(lo, hi));
   }
+  /// Does voxel i (sample f) weigh W0 at this fit? True while the fit stays in (FlatLo, FlatHi):
+  /// its neighbourhood's range widened up to the nearest opacity segment steeper than the
+  /// range's own slope (air stays flat up to the skin's ramp, whatever the fit does in between).
+  bool Flat(long long i, double f, double fit) const
+  {
+    return fit > PL[i] && fit < PH[i] && f > PL[i] && f < PH[i];
+  }
+  double FlatLo(long long i) const { return PL[i]; }
+  double FlatHi(long long i) const { return PH[i]; }
+
   /// The error that counts at voxel i (sample f, approximation u), squared: w (u - f)^2 with
   /// w = Weight(i, f, u), the weight of a majorise-minimise (iteratively reweighted) fit.
   double Error2(long long i, double f, double u) const
@@ -71,6 +81,7 @@ private:
   std::vector<std::pair<double, double>> N;
   std::vector<float> Lo, Hi;
   std::vector<float> W0; ///< Weight with the fit inside [Lo, Hi] (float, as Lo and Hi: 4 bytes a voxel)
+  std::vector<float> PL, PH; ///< Flat's open interval, rounded inwards
   double Fl = 1, GMax = 0;
 };
 } // namespace art

@@ -1,6 +1,8 @@
 // The opacity-weighted reduction: exact on linear fields, fewer tets where nothing is seen, a
 // lower weighted error than the plain reduction at the same budget, clear errors for bad input.
+#include "BisectionMesh.h"
 #include "Error.h"
+#include "LeastSquaresFit.h"
 #include "MeshQuality.h"
 #include "OpacityImportance.h"
 #include "ParallelTiles.h"
@@ -18,6 +20,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <numeric>
 #include <functional>
 #include <limits>
 
@@ -84,7 +88,8 @@ TEST(OpacityImportance, WeightsFollowTheOpacitySlope)
   const int d[3] = { 8, 4, 4 };
   const auto v = Volume(d, [](double x, double, double) { return x < 4 ? 0.2 : 0.8; });
   imp.Prepare(v, 0.05, 1);
-  EXPECT_DOUBLE_EQ(imp.Weight(0, 0.2, 0.2), 0.05);  // far from the ramp, fit in the flat band
+  EXPECT_FLOAT_EQ(imp.Weight(0, 0.2, 0.2), 0.05);   // far from the ramp, fit in the flat band (a float)
+  EXPECT_FLOAT_EQ(imp.Weight(0, 0.2, 0.45), 0.05);  // still flat: the ramp starts at 0.5
   EXPECT_DOUBLE_EQ(imp.Weight(0, 0.2, 0.7), 1.0);   // a fit straying into the ramp counts in full
   EXPECT_DOUBLE_EQ(imp.Weight(3, 0.2, 0.2), 1.0);   // its neighbour across the edge is in the ramp
   EXPECT_DOUBLE_EQ(imp.Weight(7, 0.8, 0.8), 1.0);   // in the ramp
@@ -177,6 +182,58 @@ TEST(OpacityImportance, DeterministicForAnyThreadCount)
   EXPECT_EQ(a.Tets, b.Tets);
   EXPECT_EQ(a.Values, b.Values);
   EXPECT_EQ(a.WeightedRms, b.WeightedRms);
+}
+
+TEST(OpacityImportance, ReweighEqualsGatheringEveryTet)
+{
+  // A ball of 100 in air of 0, with opacity only over 40..70: most tets (air, ball) keep flat
+  // weights when the fit moves a little, and Reweigh keeps their moments; tets whose fit moves
+  // into the ramp must be gathered again. Either way every tet's moments must equal, bit for
+  // bit, those a full gather at the new fit gives.
+  const int d[3] = { 28, 26, 24 };
+  const auto v = Volume(d, [](double x, double y, double z) {
+    return (x - 13.2) * (x - 13.2) + (y - 12.4) * (y - 12.4) + (z - 11.1) * (z - 11.1) < 60 ? 100.0 : 0.0;
+  });
+  art::OpacityImportance imp({ { 40, 0 }, { 70, 0.6 } });
+  imp.Prepare(v, 0.02, 2);
+  art::BisectionMesh mesh;
+  const int cubes[3] = { 3, 3, 3 };
+  mesh.InitKuhn(v.Dims, cubes);
+  std::vector<int> touched;
+  for (int i = 0; i < 400; ++i)
+  {
+    mesh.Refine((i * 7919) % mesh.NumberOfTets(), touched);
+  }
+  std::vector<int> all(static_cast<size_t>(mesh.NumberOfTets()));
+  std::iota(all.begin(), all.end(), 0);
+  art::LeastSquaresFit kept(v, 0.5, &imp), full(v, 0.5, &imp);
+  kept.UpdateMoments(mesh, all);
+  std::vector<double> x;
+  kept.Solve(mesh, x, 1e-8);
+  kept.UpdateMoments(mesh, all, &x);
+  // Move the fit: a little everywhere, into the ramp at every 7th vertex.
+  std::vector<double> y = x;
+  for (std::size_t i = 0; i < y.size(); ++i)
+  {
+    y[i] += i % 7 == 0 ? 55.0 - y[i] : 0.3 * std::sin(double(i));
+  }
+  const long long gathered = kept.Reweigh(mesh, y);
+  full.UpdateMoments(mesh, all, &y);
+  EXPECT_GT(gathered, 0);
+  EXPECT_LT(gathered, mesh.NumberOfTets() / 2) << "most tets keep flat weights";
+  for (int t = 0; t < mesh.NumberOfTets(); ++t)
+  {
+    const art::TetMoments &a = kept.Moments(t), &b = full.Moments(t);
+    ASSERT_EQ(std::memcmp(a.M, b.M, sizeof a.M), 0) << t;
+    ASSERT_EQ(std::memcmp(a.Bf, b.Bf, sizeof a.Bf), 0) << t;
+    ASSERT_EQ(a.G, b.G) << t;
+    ASSERT_EQ(a.MeanWeight, b.MeanWeight) << t;
+    ASSERT_EQ(a.Count, b.Count) << t;
+  }
+  // A refined tet is always gathered again: its old moments belong to its parent.
+  mesh.Refine(0, touched);
+  art::LeastSquaresFit::Extend(mesh, y);
+  EXPECT_GE(kept.Reweigh(mesh, y), 2);
 }
 
 TEST(OpacityImportance, BadOpacityInputIsAClearError)
