@@ -112,6 +112,42 @@ for x, want in expect.items():
     print(f"x={x:+.2f}: shown {np.round(got, 3)}, closed form {np.round(want, 3)}")
     assert np.abs(got - want).max() < 3 / 255, (x, got, want)
 
+# In the right half of a window twice as wide, beside a renderer whose opaque plane covers its
+# whole (left) viewport, the depth read must be this viewport's: the same picture as before.
+win.SetSize(2 * W, H)
+ren.SetViewport(0.5, 0, 1, 1)
+left = vtkRenderer()
+left.SetViewport(0, 0, 0.5, 1)
+cover = vtkPlaneSource()
+cover.SetOrigin(-5, -5, 1.5)
+cover.SetPoint1(5, -5, 1.5)
+cover.SetPoint2(-5, 5, 1.5)
+cm = vtkPolyDataMapper()
+cm.SetInputConnection(cover.GetOutputPort())
+ca = vtkActor()
+ca.SetMapper(cm)
+ca.GetProperty().SetColor(0, 1, 0)
+ca.GetProperty().LightingOff()
+left.AddActor(ca)
+left.SetActiveCamera(cam)
+win.AddRenderer(left)
+win.Render()
+grab = vtkWindowToImageFilter()
+grab.SetInput(win)
+grab.SetInputBufferTypeToRGB()
+grab.ReadFrontBufferOff()
+grab.Update()
+wide = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(H, 2 * W, 3) / 255.0
+right = wide[:, W:]
+for x, want in expect.items():
+    got = third(right, x)
+    print(f"right viewport x={x:+.2f}: shown {np.round(got, 3)}, closed form {np.round(want, 3)}")
+    assert np.abs(got - want).max() < 3 / 255, (x, got, want)
+assert np.abs(wide[H // 2, W // 2] - (0, 1, 0)).max() < 3 / 255, "the left renderer's plane"
+win.RemoveRenderer(left)
+ren.SetViewport(0, 0, 1, 1)
+win.SetSize(W, H)
+
 # Without intermixing the whole box is drawn over the plane in its middle (VTK's behaviour then).
 mapper.IntermixIntersectingGeometryOff()
 got = third(shown(), -0.75)
