@@ -39,12 +39,20 @@ double ParallelSum(long long n, F&& term)
   return s;
 }
 
-void Corners(const BisectionMesh& mesh, int t, LatticePoint P[4])
+// The voxel raster of tet t (its corners on the lattice). Bisection never makes a flat tet.
+TetRaster RasterOf(const BisectionMesh& mesh, int t)
 {
+  LatticePoint P[4];
   for (int a = 0; a < 4; ++a)
   {
     P[a] = mesh.Vertex(mesh.Tet(t)[a]);
   }
+  TetRaster r;
+  if (!r.Setup(P))
+  {
+    throw Error("internal: a flat tetrahedron in the bisection mesh");
+  }
+  return r;
 }
 } // namespace
 
@@ -73,13 +81,7 @@ void LeastSquaresFit::Extend(const BisectionMesh& mesh, std::vector<double>& x)
 
 TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t, const std::vector<double>* fit) const
 {
-  LatticePoint P[4];
-  Corners(mesh, t, P);
-  TetRaster r;
-  if (!r.Setup(P))
-  {
-    throw Error("internal: a flat tetrahedron in the bisection mesh");
-  }
+  const TetRaster r = RasterOf(mesh, t);
   TetMoments m;
   double plainDiag[4] = { 0, 0, 0, 0 }, sumW = 0; // unweighted: is the tet pinned by its voxels?
   double c[4] = { 0, 0, 0, 0 };
@@ -344,10 +346,7 @@ void LeastSquaresFit::EdgeMoments(const BisectionMesh& mesh, const std::vector<i
     for (long long i = b; i < e; ++i)
     {
       const int t = tets[i];
-      LatticePoint P[4];
-      Corners(mesh, t, P);
-      TetRaster r;
-      r.Setup(P);
+      const TetRaster r = RasterOf(mesh, t);
       double c[4] = { 0, 0, 0, 0 };
       for (int a = 0; haveFit && a < 4; ++a)
       {
@@ -411,10 +410,7 @@ void LeastSquaresFit::VertexVoxelRange(
   ForEachRange(nt, 64, [&](long long t0, long long t1, Counters&) {
     for (long long t = t0; t < t1; ++t)
     {
-      LatticePoint P[4];
-      Corners(mesh, static_cast<int>(t), P);
-      TetRaster r;
-      r.Setup(P);
+      const TetRaster r = RasterOf(mesh, static_cast<int>(t));
       double a = inf, b = -inf;
       r.ForEachVoxel(Volume.Dims, [&](long long idx, const double*) {
         const double f = Volume.Value(idx);
@@ -452,10 +448,7 @@ VoxelErrorReport LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const s
   ForEachRange(nt, 64, [&](long long t0, long long t1, Counters&) {
     for (long long t = t0; t < t1; ++t)
     {
-      LatticePoint P[4];
-      Corners(mesh, static_cast<int>(t), P);
-      TetRaster r;
-      r.Setup(P);
+      const TetRaster r = RasterOf(mesh, static_cast<int>(t));
       double c[4];
       for (int a = 0; a < 4; ++a)
       {

@@ -84,14 +84,15 @@ cam.SetParallelScale(1.5)
 ren.ResetCameraClippingRange()
 
 
-def shown():
+def shown(width=W):
+    """Renders the window and returns its RGB in [0, 1], row 0 at the bottom."""
     win.Render()
     grab = vtkWindowToImageFilter()
     grab.SetInput(win)
     grab.SetInputBufferTypeToRGB()
     grab.ReadFrontBufferOff()
     grab.Update()
-    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(H, W, 3) / 255.0
+    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(H, width, 3) / 255.0
 
 
 def composite(thickness, behind):
@@ -131,13 +132,7 @@ ca.GetProperty().LightingOff()
 left.AddActor(ca)
 left.SetActiveCamera(cam)
 win.AddRenderer(left)
-win.Render()
-grab = vtkWindowToImageFilter()
-grab.SetInput(win)
-grab.SetInputBufferTypeToRGB()
-grab.ReadFrontBufferOff()
-grab.Update()
-wide = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(H, 2 * W, 3) / 255.0
+wide = shown(2 * W)
 right = wide[:, W:]
 for x, want in expect.items():
     got = third(right, x)
