@@ -40,6 +40,12 @@
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLRectilinearGridReader.h>
 #include <vtkXMLStructuredGridReader.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkXMLMultiBlockDataReader.h>
+#include <vtkXMLPRectilinearGridReader.h>
+#include <vtkXMLPStructuredGridReader.h>
+#include <vtkXMLPUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
@@ -59,7 +65,9 @@ namespace
 {
 const std::set<std::string> VolumeExt = { ".mha", ".mhd", ".nii", ".nii.gz", ".vti", ".nrrd", ".nhdr" };
 const std::set<std::string> SurfaceExt = { ".ply", ".obj", ".stl", ".vtp" };
-const std::set<std::string> MeshExt = { ".vtu", ".vts", ".vtr" };
+// Parallel pieces (.pvtu .pvts .pvtr) and multiblock files (.vtm), as MPI solvers and ParaView
+// write them, are read whole: every piece or block appended into one grid.
+const std::set<std::string> MeshExt = { ".vtu", ".vts", ".vtr", ".pvtu", ".pvts", ".pvtr", ".vtm" };
 
 // Keeps the first error a VTK object reports instead of letting it reach the output window.
 struct ErrorCatcher
@@ -371,7 +379,7 @@ DataKind KindOf(const std::string& path)
   }
   throw Error("unknown file type '" + (e.empty() ? std::string("(none)") : e) +
       "' (volumes: .mha .mhd .nii .nii.gz .vti .nrrd or a DICOM folder; surfaces: .ply .obj "
-      ".stl .vtp; meshes: .vtu .vts .vtr; any of them: legacy .vtk)",
+      ".stl .vtp; meshes: .vtu .vts .vtr, their parallel .pvtu .pvts .pvtr, .vtm; any of them: legacy .vtk)",
     path);
 }
 
@@ -537,7 +545,7 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)
 {
   if (KindOf(path) != DataKind::Mesh)
   {
-    throw Error("is not a mesh (expected .vtu .vts .vtr, or a grid in .vtk)", path);
+    throw Error("is not a mesh (expected .vtu .vts .vtr .pvtu .pvts .pvtr .vtm, or a grid in .vtk)", path);
   }
   const std::string e = LowerExtension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
@@ -553,6 +561,22 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)
   {
     reader = FileReader<vtkXMLRectilinearGridReader>(path);
   }
+  else if (e == ".pvtu")
+  {
+    reader = FileReader<vtkXMLPUnstructuredGridReader>(path);
+  }
+  else if (e == ".pvts")
+  {
+    reader = FileReader<vtkXMLPStructuredGridReader>(path);
+  }
+  else if (e == ".pvtr")
+  {
+    reader = FileReader<vtkXMLPRectilinearGridReader>(path);
+  }
+  else if (e == ".vtm")
+  {
+    reader = FileReader<vtkXMLMultiBlockDataReader>(path);
+  }
   else
   {
     reader = FileReader<vtkDataSetReader>(path);
@@ -561,14 +585,33 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)
   vtkSmartPointer<vtkUnstructuredGrid> ug = vtkUnstructuredGrid::SafeDownCast(reader->GetOutputDataObject(0));
   if (!ug)
   {
-    // Structured and rectilinear grids become hexahedra; TetMesh tetrahedralises them.
-    auto* ds = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
-    if (!ds)
+    // Structured and rectilinear grids become hexahedra (TetMesh tetrahedralises them); the
+    // blocks of a multiblock file are appended into one grid (points shared between blocks are
+    // merged later, by TetMesh).
+    vtkNew<vtkAppendFilter> toUG;
+    if (auto* blocks = vtkCompositeDataSet::SafeDownCast(reader->GetOutputDataObject(0)))
+    {
+      auto it = vtk::TakeSmartPointer(blocks->NewIterator());
+      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      {
+        if (auto* ds = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+        {
+          toUG->AddInputData(ds);
+        }
+      }
+      if (toUG->GetNumberOfInputConnections(0) == 0)
+      {
+        throw Error("holds no data sets in its blocks", path);
+      }
+    }
+    else if (auto* ds = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0)))
+    {
+      toUG->SetInputData(ds);
+    }
+    else
     {
       throw Error("does not hold a grid", path);
     }
-    vtkNew<vtkAppendFilter> toUG;
-    toUG->SetInputData(ds);
     toUG->Update();
     ug = toUG->GetOutput();
   }
