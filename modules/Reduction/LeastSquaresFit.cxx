@@ -198,7 +198,25 @@ long long LeastSquaresFit::Reweigh(const BisectionMesh& mesh, const std::vector<
 int LeastSquaresFit::Solve(const BisectionMesh& mesh, std::vector<double>& x, double tolerance, int maxIterations)
 {
   const int nv = mesh.NumberOfVertices();
-  Extend(mesh, x); // new vertices start on the previous fit: exact warm start
+  // Solved for x - shift, the mean voxel value: CG stops at a residual relative to the right-hand
+  // side, which a large offset would dominate (1000 + 1e-6 variations stopped at an error of 7x
+  // their range). The shifted right-hand side comes straight from the moments, which are relative
+  // to each tet's own F0, so no digits of the variation are lost.
+  double shift = 0, count = 0;
+  for (int t = 0; t < mesh.NumberOfTets(); ++t)
+  {
+    shift += Mom[t].F0 * Mom[t].Count;
+    count += Mom[t].Count;
+  }
+  shift = count > 0 ? shift / count : 0.0;
+  // The coarse mesh starts at the mean (its regulariser anchors sparse tets there, not at 0);
+  // new vertices start on the previous fit: exact warm start.
+  const bool coarse = x.empty();
+  Extend(mesh, x);
+  if (coarse)
+  {
+    std::fill(x.begin(), x.end(), shift);
+  }
   const std::vector<double> anchor = x; // the previous fit, interpolated onto new vertices
   // CSR rows assembled independently, each from the tets around its vertex, in a fixed order.
   std::vector<std::vector<int>> cols(nv);
@@ -234,9 +252,9 @@ int LeastSquaresFit::Solve(const BisectionMesh& mesh, std::vector<double>& x, do
           const double mc =
             m.Regularize ? Regularization * m.MeanWeight * m.Volume / 20.0 * (a == b ? 2.0 : 1.0) : 0.0;
           val[std::lower_bound(c.begin(), c.end(), tv[b]) - c.begin()] += m.M[p] + mc;
-          bv += mc * anchor[tv[b]];
+          bv += mc * (anchor[tv[b]] - shift);
         }
-        bv += m.Bf[a] + m.F0 * rowSum; // sum lambda_a f = sum lambda_a (f - F0) + F0 sum lambda_a
+        bv += m.Bf[a] + (m.F0 - shift) * rowSum; // sum lambda_a (f - shift), from the moments about F0
       }
       rhs[v] = bv;
       diag[v] = val[std::lower_bound(c.begin(), c.end(), static_cast<int>(v)) - c.begin()];
@@ -263,6 +281,10 @@ int LeastSquaresFit::Solve(const BisectionMesh& mesh, std::vector<double>& x, do
       }
     });
   };
+  for (double& v : x)
+  {
+    v -= shift;
+  }
   std::vector<double> r(nv), z(nv), p(nv), q(nv);
   spmv(x, q);
   for (int v = 0; v < nv; ++v)
@@ -306,6 +328,10 @@ int LeastSquaresFit::Solve(const BisectionMesh& mesh, std::vector<double>& x, do
         p[v] = z[v] + beta * p[v];
       }
     });
+  }
+  for (double& v : x)
+  {
+    v += shift;
   }
   return it;
 }

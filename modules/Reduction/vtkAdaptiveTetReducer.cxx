@@ -140,6 +140,20 @@ int vtkAdaptiveTetReducer::RequestData(
     vtkNew<vtkImageData> selected;
     vtkImageData* image = input;
     vtkDataArray* chosen = this->GetInputArrayToProcess(0, inputVector);
+    vtkInformation* asked = this->GetInputArrayInformation(0);
+    if (!chosen && asked && asked->Has(vtkDataObject::FIELD_NAME()))
+    {
+      // A named array that is not there: say so (it used to reduce the active scalars instead).
+      std::string names;
+      for (int i = 0; i < input->GetPointData()->GetNumberOfArrays(); ++i)
+      {
+        const char* n = input->GetPointData()->GetArrayName(i);
+        names += std::string(i ? ", " : "") + (n ? n : "(unnamed)");
+      }
+      vtkErrorMacro(<< "The input has no point array '" << asked->Get(vtkDataObject::FIELD_NAME())
+                    << "' (point arrays: " << (names.empty() ? "none" : names) << ").");
+      return 0;
+    }
     if (chosen && chosen != input->GetPointData()->GetScalars())
     {
       selected->ShallowCopy(input);

@@ -486,9 +486,15 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
   {
     image->GetDimensions(d);
   }
-  if (!s || d[0] < 2 || d[1] < 2 || d[2] < 2)
+  if (!s)
   {
-    throw Error("volume needs point scalars and at least 2 x 2 x 2 voxels", file);
+    throw Error("volume has no point scalars", file);
+  }
+  if (d[0] < 2 || d[1] < 2 || d[2] < 2)
+  {
+    throw Error("volume of " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " + std::to_string(d[2]) +
+        " voxels has no cells to tetrahedralise (at least 2 x 2 x 2 voxels are needed)",
+      file);
   }
   const long long np = static_cast<long long>(d[0]) * d[1] * d[2];
   const long long nt = 5 * (d[0] - 1LL) * (d[1] - 1) * (d[2] - 1);

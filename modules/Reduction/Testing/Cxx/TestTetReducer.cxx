@@ -194,6 +194,22 @@ TEST(TetReducer, ClampToVoxelsRemovesTheOvershootAtAJump)
   EXPECT_GT(changed, 10);
 }
 
+TEST(TetReducer, SmallVariationsOnALargeOffset)
+{
+  // 1000 + 1e-6 g: the solver's stopping rule must follow the variation, not the offset (it used
+  // to stop at an RMS error of 7x the range: a flat blob).
+  const int d[3] = { 24, 24, 24 };
+  const double sp[3] = { 1, 1, 1 }, o[3] = { 0, 0, 0 };
+  auto img = Field(d, sp, o, [](double x, double y, double z) {
+    return 1000.0 + 1e-6 * std::exp(-((x - 11.5) * (x - 11.5) + (y - 11.5) * (y - 11.5) + (z - 11.5) * (z - 11.5)) / 40);
+  });
+  art::ReducerOptions opt;
+  opt.TargetTets = 2000;
+  const art::ReducedMesh m = art::TetReducer(opt).Run(art::VolumeFromImage(img)).back();
+  ExpectValid(m);
+  EXPECT_LT(m.Rms, 0.03 * 1e-6) << "RMS " << m.Rms << " against a range of 1e-6";
+}
+
 TEST(TetReducer, DeterministicForAnyThreadCount)
 {
   auto vol = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/data/ct-head-128.mha");

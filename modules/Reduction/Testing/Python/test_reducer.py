@@ -164,6 +164,17 @@ for clamp in (False, True):
 assert ranges[False][0] < lo - 1e-6 or ranges[False][1] > hi + 1e-6, (ranges, lo, hi)
 assert ranges[True][0] >= lo and ranges[True][1] <= hi, (ranges, lo, hi)
 
+# A named array that is not there is an error listing the arrays, not a reduction of the scalars.
+messages = []
+r = adaptivert.vtkAdaptiveTetReducer()
+r.SetInputData(ripples)
+r.SetTargetTets(100)
+r.SetInputArrayToProcess(0, 0, 0, 0, "nope")  # point data
+r.AddObserver(vtkCommand.ErrorEvent, lambda o, e: messages.append(e))
+r.Update()
+assert r.GetOutput().GetNumberOfCells() == 0, r.GetOutput().GetNumberOfCells()
+assert messages, "no error for a missing array"
+
 # An empty opacity function is a clear error.
 messages = []
 r = adaptivert.vtkAdaptiveTetReducer()

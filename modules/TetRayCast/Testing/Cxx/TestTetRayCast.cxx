@@ -308,6 +308,28 @@ TEST(TetRayCast, MaximumIntensity)
   EXPECT_NEAR(res.maxScalar, Linear({ 3, 1.5, 1.2 }), 1e-12);
 }
 
+TEST(TetMesh, FromImageSaysWhatIsMissing)
+{
+  // A 10 x 10 x 1 image has scalars but no cells: the message says that, not "needs scalars".
+  vtkNew<vtkImageData> flat;
+  flat->SetDimensions(10, 10, 1);
+  flat->AllocateScalars(VTK_FLOAT, 1);
+  try
+  {
+    TetMesh::FromImage(flat, "flat.vti");
+    FAIL() << "a one-voxel-thick image was accepted";
+  }
+  catch (const Error& e)
+  {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("10 x 10 x 1 voxels has no cells"), std::string::npos) << what;
+    EXPECT_EQ(what.find("scalars"), std::string::npos) << what;
+  }
+  vtkNew<vtkImageData> bare;
+  bare->SetDimensions(4, 4, 4);
+  EXPECT_THROW(TetMesh::FromImage(bare), Error);
+}
+
 TEST(TetMesh, FromVTKAndBadMeshes)
 {
   vtkNew<vtkUnstructuredGrid> ug;
