@@ -30,13 +30,8 @@ int NrrdTypeSize(const std::string& t)
 }
 } // namespace
 
-void CheckNrrd(const std::string& path)
+std::map<std::string, std::string> ReadNrrdFields(std::istream& in)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-  {
-    throw Error("cannot open file", path);
-  }
   std::map<std::string, std::string> keys;
   std::string line;
   for (int n = 0; n < 1000 && std::getline(in, line); ++n)
@@ -62,6 +57,17 @@ void CheckNrrd(const std::string& path)
     value.erase(0, value.find_first_not_of(" \t"));
     keys[line.substr(0, colon)] = value;
   }
+  return keys;
+}
+
+void CheckNrrd(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw Error("cannot open file", path);
+  }
+  std::map<std::string, std::string> keys = ReadNrrdFields(in);
   const std::streamoff attachedStart = in.tellg();
   const int esize = NrrdTypeSize(keys["type"]);
   const std::string encoding = keys["encoding"];

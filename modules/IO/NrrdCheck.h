@@ -6,10 +6,16 @@
 
 #include "AdaptiveRTIOModule.h"
 
+#include <istream>
+#include <map>
 #include <string>
 
 namespace art
 {
+/// The "key: value" fields of a NRRD header, read from `in` up to the first empty line (where
+/// attached data starts, `in` is left there); comments and "key:=value" pairs are skipped.
+ADAPTIVERTIO_EXPORT std::map<std::string, std::string> ReadNrrdFields(std::istream& in);
+
 /// Throws art::Error naming `path` when raw NRRD data is shorter than the header promises.
 /// A data file series (LIST or a pattern), which vtkNrrdReader segfaults on, is an error too.
 /// Compressed encodings and byte skip -1 are left to VTK.

@@ -1,5 +1,6 @@
 #include "VolumePlacement.h"
 #include "Error.h"
+#include "NrrdCheck.h"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -112,34 +113,6 @@ Transform Choose(vtkNIFTIImageReader* r, const std::string& path)
   }
   return {};
 }
-// The "key: value" lines of a NRRD header, up to the first empty line.
-std::map<std::string, std::string> NrrdFields(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  std::map<std::string, std::string> keys;
-  std::string line;
-  for (int n = 0; n < 1000 && std::getline(in, line); ++n)
-  {
-    if (!line.empty() && line.back() == '\r')
-    {
-      line.pop_back();
-    }
-    if (line.empty())
-    {
-      break;
-    }
-    const auto colon = line.find(':');
-    if (line[0] == '#' || colon == std::string::npos || line.compare(colon, 2, ":=") == 0)
-    {
-      continue;
-    }
-    std::string value = line.substr(colon + 1);
-    value.erase(0, value.find_first_not_of(" \t"));
-    keys[line.substr(0, colon)] = value;
-  }
-  return keys;
-}
-
 // "space directions": one "(x,y,z)" vector per axis, or "none" (an empty vector) for a
 // non-spatial axis.
 std::vector<std::vector<double>> NrrdDirections(const std::string& value, const std::string& path)
@@ -174,7 +147,8 @@ std::vector<std::vector<double>> NrrdDirections(const std::string& value, const 
 
 vtkSmartPointer<vtkImageData> PlaceNrrd(vtkImageData* img, const std::string& path)
 {
-  auto keys = NrrdFields(path);
+  std::ifstream file(path, std::ios::binary);
+  auto keys = ReadNrrdFields(file);
   std::vector<long long> sizes;
   {
     std::istringstream in(keys["sizes"]);
