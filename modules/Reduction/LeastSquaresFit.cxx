@@ -127,14 +127,7 @@ TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t, const std::
       }
     });
   };
-  if (Volume.DoubleValues)
-  {
-    accumulate(Volume.Double.data());
-  }
-  else
-  {
-    accumulate(Volume.Float.data());
-  }
+  Volume.WithSamples(accumulate);
   m.Regularize = m.Count < RegularizeBelow || plainDiag[0] < 0.5 || plainDiag[1] < 0.5 || plainDiag[2] < 0.5 ||
     plainDiag[3] < 0.5;
   m.MeanWeight = m.Count > 0 ? sumW / m.Count : 1.0;
@@ -414,14 +407,7 @@ void LeastSquaresFit::EdgeMoments(const BisectionMesh& mesh, const std::vector<i
           }
         });
       };
-      if (Volume.DoubleValues)
-      {
-        pass(Volume.Double.data());
-      }
-      else
-      {
-        pass(Volume.Float.data());
-      }
+      Volume.WithSamples(pass);
       out[t] = m;
     }
   });
@@ -494,14 +480,7 @@ VoxelErrorReport LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const s
           ++n;
         });
       };
-      if (Volume.DoubleValues)
-      {
-        pass(Volume.Double.data());
-      }
-      else
-      {
-        pass(Volume.Float.data());
-      }
+      Volume.WithSamples(pass);
       sse[t] = s;
       wsse[t] = ws;
       out.TetRms[t] = n ? std::sqrt(s / n) : 0.0;

@@ -22,6 +22,20 @@ struct VoxelVolume
 
   long long NumberOfVoxels() const { return static_cast<long long>(Dims[0]) * Dims[1] * Dims[2]; }
   double Value(long long i) const { return DoubleValues ? Double[i] : Float[i]; }
+  /// Calls f with a pointer to the samples in their own type (float or double): voxel passes
+  /// index it directly, without Value's branch per voxel.
+  template <class F>
+  void WithSamples(F&& f) const
+  {
+    if (DoubleValues)
+    {
+      f(Double.data());
+    }
+    else
+    {
+      f(Float.data());
+    }
+  }
   /// World position of continuous voxel index coordinates (i, j, k).
   void IndexToWorld(const double ijk[3], double w[3]) const
   {
