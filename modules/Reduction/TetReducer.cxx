@@ -111,7 +111,6 @@ ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const Le
   out.ScalarName = vol.Name;
   return out;
 }
-
 } // namespace
 
 std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* progress,

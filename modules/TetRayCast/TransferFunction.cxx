@@ -160,23 +160,24 @@ TransferFunction TransferFunction::FromVTK(vtkVolumeProperty* p)
   std::vector<Node> nodes;
   std::function<void(const Node&, const Node&, int)> refine = [&](const Node& a, const Node& b, int depth) {
     bool bent = false;
-    for (double f : { 0.25, 0.5, 0.75 })
+    Node q[3];
+    for (int k = 0; k < 3; ++k)
     {
-      const Node m = at(a.s + f * (b.s - a.s));
+      const double f = 0.25 * (k + 1);
+      q[k] = at(a.s + f * (b.s - a.s));
       for (int c = 0; c < 3 && !bent; ++c)
       {
-        bent = std::fabs(m.rgb[c] - (a.rgb[c] + f * (b.rgb[c] - a.rgb[c]))) > 2e-3;
+        bent = std::fabs(q[k].rgb[c] - (a.rgb[c] + f * (b.rgb[c] - a.rgb[c]))) > 2e-3;
       }
-      bent = bent || std::fabs(m.alpha - (a.alpha + f * (b.alpha - a.alpha))) > 2e-3;
+      bent = bent || std::fabs(q[k].alpha - (a.alpha + f * (b.alpha - a.alpha))) > 2e-3;
     }
     if (!bent || depth >= 8)
     {
       return;
     }
-    const Node m = at(0.5 * (a.s + b.s));
-    refine(a, m, depth + 1);
-    nodes.push_back(m);
-    refine(m, b, depth + 1);
+    refine(a, q[1], depth + 1); // q[1]: the midpoint, already evaluated
+    nodes.push_back(q[1]);
+    refine(q[1], b, depth + 1);
   };
   for (std::size_t i = 0; i < s.size(); ++i)
   {
