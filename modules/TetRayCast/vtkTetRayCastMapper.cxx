@@ -2,11 +2,13 @@
 
 #include "Camera.h"
 #include "Error.h"
+#include "Progress.h"
 #include "TetMesh.h"
 #include "TetRayCaster.h"
 
 #include <vtkAutoInit.h>
 #include <vtkCamera.h>
+#include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
@@ -28,6 +30,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <thread>
 #include <vector>
 
 // The textured-quad helper is an OpenGL2 override of vtkRayCastImageDisplayHelper.
@@ -293,7 +296,40 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   art::Image img;
   this->Impl->Caster->SetSettings(std::move(s));
-  const art::RenderStats st = this->Impl->Caster->Render(cam, img, nullptr, ends.empty() ? nullptr : &ends);
+  // Progress goes to observers on the thread that called Render only, as VTK's own ray casters
+  // report from their thread 0: observers (Python ones too) run where VTK runs them. There the
+  // render window's abort check (an interactor's pending event) can also stop the frame.
+  const std::thread::id caller = std::this_thread::get_id();
+  vtkRenderWindow* win = ren->GetRenderWindow();
+  art::Progress* self = nullptr;
+  double reported = -1.0;
+  art::Progress progress([&](double f, const std::string&) {
+    if (std::this_thread::get_id() != caller)
+    {
+      return;
+    }
+    reported = f;
+    this->InvokeEvent(vtkCommand::VolumeMapperRenderProgressEvent, &f);
+    if (win && win->CheckAbortStatus())
+    {
+      self->Cancel();
+    }
+  });
+  self = &progress;
+  this->InvokeEvent(vtkCommand::VolumeMapperRenderStartEvent);
+  const art::RenderStats st = this->Impl->Caster->Render(cam, img, &progress, ends.empty() ? nullptr : &ends);
+  if (progress.Cancelled())
+  {
+    // An aborted frame is not drawn; the last whole image stays.
+    this->InvokeEvent(vtkCommand::VolumeMapperRenderEndEvent);
+    return;
+  }
+  if (reported < 1.0)
+  {
+    double one = 1.0;
+    this->InvokeEvent(vtkCommand::VolumeMapperRenderProgressEvent, &one);
+  }
+  this->InvokeEvent(vtkCommand::VolumeMapperRenderEndEvent);
   this->LastRenderTime = st.seconds;
   this->LastTetsCrossed = static_cast<double>(st.counters.tetsCrossed);
 
