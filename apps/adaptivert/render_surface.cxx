@@ -20,6 +20,7 @@
 #include <vtkPolyData.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -115,7 +116,11 @@ int Run(const cli::Options& o, const std::string& input)
     }
     vcam->SetPosition(p.x, p.y, p.z);
     vcam->SetFocalPoint(f.x, f.y, f.z);
-    vcam->SetViewUp(0, 0, 1);
+    // z is up, except when looking straight along z (a floor plan from above): a view-up parallel
+    // to the view direction leaves no 'right', and every ray came out NaN (one flat colour).
+    const art::Vec3 dir = art::Normalize(f - p);
+    const bool alongZ = std::abs(dir.z) > 0.999;
+    vcam->SetViewUp(0, alongZ ? (dir.z < 0 ? 1 : -1) : 0, alongZ ? 0 : 1);
     vcam->OrthogonalizeViewUp();
     vcam->Azimuth(o.GetDouble("azimuth"));
     vcam->Elevation(o.GetDouble("elevation"));
