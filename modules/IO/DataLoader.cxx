@@ -56,6 +56,7 @@
 #include <memory>
 #include <new>
 #include <set>
+#include <sstream>
 
 namespace fs = std::filesystem;
 
@@ -333,6 +334,45 @@ void ApplyDicomGeometry(vtkImageData* img, vtkDICOMImageReader* r)
   img->SetOrigin(origin);
   img->SetDirectionMatrix(rc[0], -cc[0], -n[0], rc[1], -cc[1], -n[1], rc[2], -cc[2], -n[2]);
 }
+
+// VTK's XML and legacy readers keep a negative spacing (a flipped axis, as some tools write one),
+// which the voxel reference took as positive: it rendered the volume mirrored against the reduced
+// mesh (8 dB apart). The sign moves into the direction matrix, placing every voxel where it was.
+// A zero or non-finite spacing along an axis of several voxels puts them all in one plane.
+void MakeSpacingPositive(vtkImageData* img, const std::string& path)
+{
+  double sp[3];
+  img->GetSpacing(sp);
+  int d[3];
+  img->GetDimensions(d);
+  double dir[9];
+  std::copy_n(img->GetDirectionMatrix()->GetData(), 9, dir);
+  bool flipped = false;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (d[a] > 1 && !(std::abs(sp[a]) > 0 && std::isfinite(sp[a])))
+    {
+      std::ostringstream what;
+      what << "spacing along " << "xyz"[a] << " is " << sp[a]
+           << "; it must be finite and non-zero (the voxels of that axis would lie in one plane)";
+      throw Error(what.str(), path);
+    }
+    if (sp[a] < 0)
+    {
+      sp[a] = -sp[a];
+      for (int r = 0; r < 3; ++r)
+      {
+        dir[3 * r + a] = -dir[3 * r + a];
+      }
+      flipped = true;
+    }
+  }
+  if (flipped)
+  {
+    img->SetSpacing(sp);
+    img->SetDirectionMatrix(dir);
+  }
+}
 } // namespace
 
 const char* KindName(DataKind k)
@@ -457,6 +497,7 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
     ApplyRescale(img, nifti->GetRescaleSlope(), nifti->GetRescaleIntercept());
     PlaceNifti(img, nifti, path);
   }
+  MakeSpacingPositive(img, path);
   int dims[3];
   img->GetDimensions(dims);
   if (dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0 || !img->GetPointData()->GetScalars())

@@ -349,6 +349,56 @@ TEST(Formats, MetaImageDirectionAndNegativeSpacing)
   EXPECT_TRUE(art::LoadVolume(Dir() + "/plain.mhd")->GetDirectionMatrix()->IsIdentity());
 }
 
+// VTK's XML and legacy formats keep a spacing's sign; the voxel reference took it as positive and
+// rendered such a volume mirrored against its reduced mesh. Loaded, the sign is in the direction
+// and every voxel stays where the file put it. A zero spacing puts an axis in one plane: an error.
+TEST(Formats, VtiAndLegacySpacingSign)
+{
+  auto img = SmallVolume();
+  img->SetSpacing(0.5, -0.75, 2.0);
+  img->SetDirectionMatrix(0, -1, 0, 1, 0, 0, 0, 0, 1);
+  WriteVolume<vtkXMLImageDataWriter>(img, Dir() + "/negative.vti");
+  WriteVolume<vtkDataSetWriter>(img, Dir() + "/negative.vtk"); // legacy: no direction
+  for (const std::string name : { "negative.vti", "negative.vtk" })
+  {
+    SCOPED_TRACE(name);
+    auto v = art::LoadVolume(Dir() + "/" + name);
+    EXPECT_EQ(v->GetSpacing()[1], 0.75);
+    const bool legacy = name == "negative.vtk";
+    double want[3], got[3];
+    for (int k = 0; k < 3; k += 2)
+      for (int j = 0; j < 5; j += 4)
+        for (int i = 0; i < 11; i += 10)
+        {
+          if (legacy)
+          {
+            want[0] = 10 + 0.5 * i, want[1] = -4 - 0.75 * j, want[2] = 3 + 2.0 * k;
+          }
+          else
+          {
+            img->TransformIndexToPhysicalPoint(i, j, k, want);
+          }
+          v->TransformIndexToPhysicalPoint(i, j, k, got);
+          for (int a = 0; a < 3; ++a)
+          {
+            EXPECT_NEAR(got[a], want[a], 1e-12) << "voxel " << i << " " << j << " " << k;
+          }
+        }
+    EXPECT_EQ(v->GetPointData()->GetScalars()->GetTuple1(3 + 11 * 4), img->GetPointData()->GetScalars()->GetTuple1(3 + 11 * 4));
+  }
+  img->SetSpacing(0.5, 0, 2.0);
+  WriteVolume<vtkXMLImageDataWriter>(img, Dir() + "/flat.vti");
+  try
+  {
+    art::LoadVolume(Dir() + "/flat.vti");
+    ADD_FAILURE() << "a zero spacing loaded";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("flat.vti: spacing along y is 0"), std::string::npos) << e.what();
+  }
+}
+
 // vtkNrrdReader takes a fastest axis of 9 or fewer samples for vector components (its own
 // heuristic), so this volume is 11 wide.
 TEST(Formats, NrrdWrittenByHand)
