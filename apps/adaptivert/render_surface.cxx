@@ -19,6 +19,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -99,15 +100,18 @@ int Run(const cli::Options& o, const std::string& input)
 
   const art::Box3 bounds = store->Bounds();
   vtkNew<vtkCamera> vcam;
-  cli::SetupCamera(o, bounds, vcam);
   const double angle = o.GetDouble("view-angle");
   if (!(angle > 0 && angle < 180))
   {
     throw cli::UsageError("--view-angle expects degrees in (0, 180)");
   }
+  // The angle is set before framing, which zooms by narrowing it (setting it after undid --zoom).
   vcam->SetViewAngle(angle);
+  cli::SetupCamera(o, bounds, vcam);
   if (o.Has("camera-position"))
   {
+    vcam->SetViewAngle(angle); // zoomed once below, not twice
+    vcam->SetParallelScale(std::max(0.5 * bounds.Diagonal(), 1e-12));
     const art::Vec3 p = ParseVec(o.Get("camera-position"), "--camera-position") - shift;
     const art::Vec3 f = o.Has("focal-point") ? ParseVec(o.Get("focal-point"), "--focal-point") - shift : bounds.Center();
     if (p == f)
