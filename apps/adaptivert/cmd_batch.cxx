@@ -276,8 +276,10 @@ int Run(const cli::Options& o)
   WriteSummary(job, csv, chart, quiet);
   if (o.Flag("json"))
   {
-    std::printf("{\"tasks\":%zu,\"rendered\":%zu,\"failed\":%zu,\"csv\":\"%s\",\"chart\":\"%s\"}\n",
-      job.tasks.size(), rendered, failed, csv.c_str(), chart.c_str());
+    // Paths are escaped: a folder named with a quote or backslash gave JSON no parser reads.
+    const nlohmann::ordered_json j = { { "tasks", job.tasks.size() }, { "rendered", rendered }, { "failed", failed }, { "csv", csv },
+      { "chart", chart } };
+    std::printf("%s\n", j.dump().c_str());
   }
   else
   {
