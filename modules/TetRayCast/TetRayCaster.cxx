@@ -39,6 +39,10 @@ struct TetRayCaster::Impl
     const double dirLen = Length(r.dir);
     const double tMargin = 1e-9 * M.Bounds().Diagonal() / dirLen;
     const Vec3 view = r.dir / dirLen;
+    // Per-ray constants in locals: read through references the compiler reloads them every tet,
+    // as the walk's stores of doubles might alias them.
+    const double tmax = r.tmax, ert = S.earlyTermination;
+    const std::size_t isoCount = S.isos.size();
     RayAccum acc;
     double tDone = -1e300;
     bool stop = false;
@@ -48,12 +52,12 @@ struct TetRayCaster::Impl
     auto visit = [&](int t, const FaceCrossing& in, const FaceCrossing& whole) ART_ALWAYS_INLINE {
       // The ray ends inside this tet (at opaque geometry in front of the exit): the segment is
       // cut there, the scalar interpolated linearly along it, and the walk stops.
-      const bool ends = whole.t > r.tmax;
+      const bool ends = whole.t > tmax;
       FaceCrossing ex = whole;
       if (ends)
       {
-        const double f = whole.t > in.t ? std::max(0.0, (r.tmax - in.t) / (whole.t - in.t)) : 0.0;
-        ex.t = std::max(in.t, r.tmax);
+        const double f = whole.t > in.t ? std::max(0.0, (tmax - in.t) / (whole.t - in.t)) : 0.0;
+        ex.t = std::max(in.t, tmax);
         ex.s = in.s + f * (whole.s - in.s);
         stop = true;
       }
@@ -66,7 +70,7 @@ struct TetRayCaster::Impl
       double fa = 0.0, sa = in.s;
       // Iso crossings on this segment, half-open so a crossing at a shared face counts once.
       int n = 0;
-      for (std::size_t k = 0; k < S.isos.size() && n < 8; ++k)
+      for (std::size_t k = 0; k < isoCount && n < 8; ++k)
       {
         const double v = S.isos[k].value;
         if ((in.s < v) != (ex.s < v))
@@ -112,7 +116,7 @@ struct TetRayCaster::Impl
         }
       }
       rule.Integrate(sa, ex.s, len * (1.0 - fa), acc);
-      if (ends || acc.Alpha() >= S.earlyTermination)
+      if (ends || acc.Alpha() >= ert)
       {
         stop = true;
         return false;
