@@ -26,8 +26,8 @@ long long ParseCount(const std::string& s, const std::string& what)
 std::string UsageText()
 {
   return "usage: adaptivert-view [options] FILE\n\n"
-         "Shows a volume (.mha .nii .vti .nrrd, DICOM folder), a mesh (.vtu .vts .vtr .pvtu .vtm) or a\n"
-         "triangle scene (.ply .obj .stl .vtp), or a legacy .vtk file of any of them, in a window.\n"
+         "Shows a volume (.mha .nii .vti .pvti .nrrd, DICOM folder), a mesh (.vtu .vts .vtr .pvtu .vtm)\n"
+         "or a triangle scene (.ply .obj .stl .vtp .pvtp), or a legacy .vtk file of any of them, in a window.\n"
          "Volumes are reduced to adaptive tets in the background (nested levels from one run) and ray\n"
          "cast cell by cell (vtkTetRayCastMapper);\n"
          "triangle scenes are ray traced through the TriangleGrid surface tracer.\n\n"

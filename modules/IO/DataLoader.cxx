@@ -37,6 +37,8 @@
 #include <vtkSTLReader.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLImageDataReader.h>
+#include <vtkXMLPImageDataReader.h>
+#include <vtkXMLPPolyDataReader.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLRectilinearGridReader.h>
 #include <vtkXMLStructuredGridReader.h>
@@ -64,8 +66,10 @@ namespace art
 {
 namespace
 {
-const std::set<std::string> VolumeExt = { ".mha", ".mhd", ".nii", ".nii.gz", ".vti", ".nrrd", ".nhdr" };
-const std::set<std::string> SurfaceExt = { ".ply", ".obj", ".stl", ".vtp" };
+// Parallel image and polydata pieces (.pvti .pvtp, as ParaView saves them from several ranks) are
+// read whole, as the mesh pieces below are.
+const std::set<std::string> VolumeExt = { ".mha", ".mhd", ".nii", ".nii.gz", ".vti", ".pvti", ".nrrd", ".nhdr" };
+const std::set<std::string> SurfaceExt = { ".ply", ".obj", ".stl", ".vtp", ".pvtp" };
 // Parallel pieces (.pvtu .pvts .pvtr) and multiblock files (.vtm), as MPI solvers and ParaView
 // write them, are read whole: every piece or block appended into one grid.
 const std::set<std::string> MeshExt = { ".vtu", ".vts", ".vtr", ".pvtu", ".pvts", ".pvtr", ".vtm" };
@@ -222,6 +226,50 @@ DataKind LegacyKind(const std::string& path)
           (catcher.Message.empty() ? std::string() : ": " + catcher.Message),
         path);
   }
+}
+
+// VTK 9.1's vtkXMLPImageDataReader leaves the direction at the identity, and its writer leaves it
+// out of the .pvti (its pieces keep it): a turned image saved in pieces loaded unturned. The
+// direction is taken from the .pvti (as later VTK writes it), else from its first piece.
+bool PvtiDirection(const std::string& path, double dir[9])
+{
+  auto attribute = [](const std::string& file, const char* element, const char* name) -> std::string {
+    std::ifstream in(file, std::ios::binary);
+    std::string head(1 << 16, '\0');
+    in.read(&head[0], static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    const std::size_t e = head.find(std::string("<") + element);
+    const std::size_t end = e == std::string::npos ? e : head.find('>', e);
+    if (end == std::string::npos)
+    {
+      return {};
+    }
+    const std::string tag = head.substr(e, end - e);
+    const std::string key = std::string(" ") + name + "=\"";
+    const std::size_t a = tag.find(key);
+    const std::size_t q = a == std::string::npos ? a : tag.find('"', a + key.size());
+    return q == std::string::npos ? std::string() : tag.substr(a + key.size(), q - a - key.size());
+  };
+  std::string text = attribute(path, "PImageData", "Direction");
+  if (text.empty())
+  {
+    const std::string piece = attribute(path, "Piece", "Source");
+    if (piece.empty())
+    {
+      return false;
+    }
+    const fs::path p = fs::path(piece).is_absolute() ? fs::path(piece) : fs::path(path).parent_path() / piece;
+    text = attribute(p.string(), "ImageData", "Direction");
+  }
+  std::istringstream in(text);
+  for (int i = 0; i < 9; ++i)
+  {
+    if (!(in >> dir[i]))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 // Makes `name` the active scalars of `pd`; without a name keeps the active scalars, or takes the
@@ -418,8 +466,8 @@ DataKind KindOf(const std::string& path)
     return LegacyKind(path);
   }
   throw Error("unknown file type '" + (e.empty() ? std::string("(none)") : e) +
-      "' (volumes: .mha .mhd .nii .nii.gz .vti .nrrd or a DICOM folder; surfaces: .ply .obj "
-      ".stl .vtp; meshes: .vtu .vts .vtr, their parallel .pvtu .pvts .pvtr, .vtm; any of them: legacy .vtk)",
+      "' (volumes: .mha .mhd .nii .nii.gz .vti .pvti .nrrd or a DICOM folder; surfaces: .ply .obj "
+      ".stl .vtp .pvtp; meshes: .vtu .vts .vtr, their parallel .pvtu .pvts .pvtr, .vtm; any of them: legacy .vtk)",
     path);
 }
 
@@ -427,7 +475,7 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
 {
   if (KindOf(path) != DataKind::Volume)
   {
-    throw Error("is not a volume (expected .mha .mhd .nii .nii.gz .vti .nrrd, image data in .vtk, or a DICOM folder)",
+    throw Error("is not a volume (expected .mha .mhd .nii .nii.gz .vti .pvti .nrrd, image data in .vtk, or a DICOM folder)",
       path);
   }
   std::error_code ec;
@@ -465,6 +513,10 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   {
     reader = FileReader<vtkXMLImageDataReader>(path);
   }
+  else if (e == ".pvti")
+  {
+    reader = FileReader<vtkXMLPImageDataReader>(path);
+  }
   else if (e == ".vtk")
   {
     reader = FileReader<vtkDataSetReader>(path);
@@ -477,9 +529,13 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   RunReader(reader, path);
   auto img = vtkSmartPointer<vtkImageData>::New();
   img->ShallowCopy(reader->GetOutputDataObject(0));
+  double direction[9];
+  if (e == ".pvti" && PvtiDirection(path, direction))
+  {
+    img->SetDirectionMatrix(direction); // before cell centres are placed
+  }
   img = CellsAsVoxels(img, array);
   SelectScalars(img->GetPointData(), array, path);
-  double direction[9];
   if (vtkMetaImageReader::SafeDownCast(reader) && MetaImageDirection(path, direction))
   {
     img->SetDirectionMatrix(direction);
@@ -524,7 +580,7 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
 {
   if (KindOf(path) != DataKind::Surface)
   {
-    throw Error("is not a surface (expected .ply .obj .stl .vtp or polygons in .vtk)", path);
+    throw Error("is not a surface (expected .ply .obj .stl .vtp .pvtp or polygons in .vtk)", path);
   }
   const std::string e = LowerExtension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
@@ -547,6 +603,10 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   else if (e == ".vtk")
   {
     reader = FileReader<vtkDataSetReader>(path);
+  }
+  else if (e == ".pvtp")
+  {
+    reader = FileReader<vtkXMLPPolyDataReader>(path);
   }
   else
   {

@@ -19,8 +19,8 @@ namespace art
 {
 enum class DataKind
 {
-  Volume,  ///< vtkImageData: .mha .mhd .nii .nii.gz .vti .nrrd .nhdr, or a DICOM folder
-  Surface, ///< vtkPolyData: .ply .obj .stl .vtp
+  Volume,  ///< vtkImageData: .mha .mhd .nii .nii.gz .vti .pvti .nrrd .nhdr, or a DICOM folder
+  Surface, ///< vtkPolyData: .ply .obj .stl .vtp .pvtp
   Mesh     ///< vtkUnstructuredGrid: .vtu, or .vts / .vtr grids as hexahedra
   // A legacy .vtk file is whichever of the three its header names.
 };

@@ -628,6 +628,69 @@ TEST(Formats, EverySurfaceFormatKeepsTheTriangles)
   }
 }
 
+// Parallel pieces as ParaView saves them from several ranks (.pvti, .pvtp) were an "unknown file
+// type". VTK 9.1 writes a .pvti without the direction its pieces keep, and its reader drops it:
+// the direction comes from the .pvti or else the first piece. Pieces are written by hand here.
+TEST(Formats, ParallelImageAndPolyDataPieces)
+{
+  auto whole = SmallVolume();
+  whole->SetDirectionMatrix(0, -1, 0, 1, 0, 0, 0, 0, 1);
+  const int slabs[2][2] = { { 0, 1 }, { 1, 2 } }; // z extents; the pieces share the plane z = 1
+  for (int p = 0; p < 2; ++p)
+  {
+    vtkNew<vtkImageData> piece;
+    piece->SetExtent(0, 10, 0, 4, slabs[p][0], slabs[p][1]);
+    piece->SetSpacing(whole->GetSpacing());
+    piece->SetOrigin(whole->GetOrigin());
+    piece->SetDirectionMatrix(whole->GetDirectionMatrix());
+    vtkNew<vtkShortArray> s;
+    s->SetName("scalars");
+    s->SetNumberOfTuples(11 * 5 * 2);
+    for (vtkIdType i = 0; i < s->GetNumberOfTuples(); ++i)
+    {
+      s->SetValue(i, static_cast<short>(whole->GetPointData()->GetScalars()->GetTuple1(i + 55 * slabs[p][0])));
+    }
+    piece->GetPointData()->SetScalars(s);
+    WriteVolume<vtkXMLImageDataWriter>(piece, Dir() + "/v_" + std::to_string(p) + ".vti");
+  }
+  for (const std::string direction : { "", " Direction=\"0 -1 0 1 0 0 0 0 1\"" })
+  {
+    std::ofstream(Dir() + "/v.pvti")
+      << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PImageData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      << "<PImageData WholeExtent=\"0 10 0 4 0 2\" GhostLevel=\"0\" Origin=\"10 -4 3\" Spacing=\"0.5 0.75 2\""
+      << direction << ">\n<PPointData Scalars=\"scalars\"><PDataArray type=\"Int16\" Name=\"scalars\"/></PPointData>\n"
+      << "<Piece Extent=\"0 10 0 4 0 1\" Source=\"v_0.vti\"/>\n<Piece Extent=\"0 10 0 4 1 2\" Source=\"v_1.vti\"/>\n"
+      << "</PImageData>\n</VTKFile>\n";
+    auto v = art::LoadVolume(Dir() + "/v.pvti");
+    ExpectSameVolume(whole, v);
+    double want[3], got[3];
+    whole->TransformIndexToPhysicalPoint(10, 4, 2, want);
+    v->TransformIndexToPhysicalPoint(10, 4, 2, got);
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_NEAR(got[a], want[a], 1e-12) << "direction in the .pvti: '" << direction << "'";
+    }
+  }
+
+  vtkNew<vtkSphereSource> half[2];
+  vtkIdType tris = 0;
+  for (int p = 0; p < 2; ++p)
+  {
+    half[p]->SetThetaResolution(12);
+    half[p]->SetStartTheta(180.0 * p);
+    half[p]->SetEndTheta(180.0 * (p + 1));
+    half[p]->Update();
+    tris += half[p]->GetOutput()->GetNumberOfPolys();
+    ASSERT_TRUE(WriteSurface<vtkXMLPolyDataWriter>(half[p]->GetOutput(), Dir() + "/s_" + std::to_string(p) + ".vtp"));
+  }
+  std::ofstream(Dir() + "/s.pvtp")
+    << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PPolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+    << "<PPolyData GhostLevel=\"0\"><PPointData/><PPoints><PDataArray type=\"Float32\" Name=\"Points\" "
+    << "NumberOfComponents=\"3\"/></PPoints>\n<Piece Source=\"s_0.vtp\"/>\n<Piece Source=\"s_1.vtp\"/>\n"
+    << "</PPolyData>\n</VTKFile>\n";
+  EXPECT_EQ(art::LoadSurface(Dir() + "/s.pvtp")->GetNumberOfPolys(), tris);
+}
+
 // A legacy .vtk file is read as whatever its header holds: image data as a volume, polygons as a
 // surface, unstructured, structured and rectilinear grids as a mesh (grids as hexahedra or voxels).
 TEST(Formats, LegacyVtkByContentAndXmlGrids)
