@@ -106,9 +106,17 @@ AtomicFile::AtomicFile(std::string target)
   : Dest(std::move(target))
 {
   static std::atomic<int> serial{ 0 };
-  const fs::path p(Dest);
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
   std::error_code ec;
+  // A symbolic link is written through, as a shell's '>' does: renaming onto the link itself
+  // replaced it with a plain file and left the file it pointed to as it was.
+  fs::path p(Dest);
+  for (int hops = 0; hops < 40 && fs::is_symlink(p, ec); ++hops)
+  {
+    const fs::path to = fs::read_symlink(p, ec);
+    p = to.is_absolute() ? to : p.parent_path() / to;
+  }
+  Real = p.string();
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
   if (!fs::is_directory(dir, ec))
   {
     throw Error("folder '" + dir.string() + "' does not exist", Dest);
@@ -155,7 +163,14 @@ void WriteFileAtomic(const std::string& path, const std::string& content)
 
 void AtomicFile::Commit()
 {
-  if (std::rename(Temp.c_str(), Dest.c_str()) != 0)
+  // The file replaced keeps its permissions (a group-writable result stays group-writable).
+  std::error_code ec;
+  const fs::file_status old = fs::status(Real, ec);
+  if (!ec && fs::is_regular_file(old))
+  {
+    fs::permissions(Temp, old.permissions(), ec);
+  }
+  if (std::rename(Temp.c_str(), Real.c_str()) != 0)
   {
     const std::string why = std::strerror(errno);
     std::remove(Temp.c_str());

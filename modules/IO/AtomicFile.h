@@ -15,7 +15,8 @@ class ADAPTIVERTIO_EXPORT AtomicFile
 public:
   /// Chooses a unique temporary name in the target's folder, keeping its extension so that
   /// writers that pick a format by extension still work. Throws art::Error if the folder is
-  /// missing or not writable.
+  /// missing or not writable. A target that is a symbolic link is written through (the file it
+  /// points to is replaced, in that file's folder), and a replaced file keeps its permissions.
   explicit AtomicFile(std::string target);
   /// Removes the temporary file if Commit() was never called.
   ~AtomicFile();
@@ -29,6 +30,7 @@ public:
 
 private:
   std::string Dest, Temp;
+  std::string Real; ///< Dest with symbolic links followed: the file replaced
   int Slot = -1; ///< where the temporary file is registered for removal on SIGINT/SIGTERM/SIGHUP
   bool Done = false;
 };

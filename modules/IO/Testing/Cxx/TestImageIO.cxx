@@ -101,6 +101,29 @@ TEST(ImageIO, FailedWriteLeavesExistingFileAndNoTemp)
   EXPECT_EQ(CountTemps(dir), 0u);
 }
 
+// Writing onto a symbolic link replaced the link with a plain file and left the file it named as
+// it was (a 'latest.png' pointing into a results folder); a shell's '>' writes through it. The
+// replaced file keeps its permissions (it came back 0644 whatever it had been).
+TEST(ImageIO, WritesThroughSymbolicLinksAndKeepsPermissions)
+{
+  const fs::path dir = fs::path(TempDir()) / "links";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "results");
+  const fs::path real = dir / "results" / "run1.png";
+  art::WriteImage(Image(4, 4, { 1, 0, 0, 1 }), real.string());
+  fs::permissions(real, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+      fs::perms::group_write | fs::perms::others_read);
+  const fs::path link = dir / "latest.png";
+  fs::create_symlink("results/run1.png", link);
+  art::WriteImage(Image(8, 2, { 0, 1, 0, 1 }), link.string());
+  EXPECT_TRUE(fs::is_symlink(link));
+  const Image back = art::ReadImage(real.string());
+  EXPECT_EQ(back.Width(), 8);
+  EXPECT_EQ(back.Height(), 2);
+  EXPECT_EQ(fs::status(real).permissions() & fs::perms::group_write, fs::perms::group_write);
+  EXPECT_EQ(CountTemps(dir.string()) + CountTemps((dir / "results").string()), 0u);
+}
+
 TEST(ImageIO, ErrorsNameTheFile)
 {
   try
