@@ -206,6 +206,7 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
     }
     Out(text, "  bounds       %s\n", Bounds(pd).c_str());
     Out(text, "  point data   %s\n", ArrayList(pd->GetPointData()).c_str());
+    Out(text, "  cell data    %s\n", ArrayList(pd->GetCellData()).c_str()); // face colours, labels
     j.Set("points", static_cast<long long>(pd->GetNumberOfPoints()))
       .Set("polygons", static_cast<long long>(pd->GetNumberOfPolys()))
       .Set("triangles", tris)
