@@ -11,17 +11,14 @@
 #include "ParallelTiles.h"
 #include "ProgressBar.h"
 #include "Render.h"
+#include "SurfaceColours.h"
 #include "SurfaceTracer.h"
 
 #include <vtkCamera.h>
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkTriangleFilter.h>
 
 #include <algorithm>
 #include <chrono>
@@ -60,62 +57,6 @@ art::Vec3 ParseVec(const std::string& s, const char* what)
   return v;
 }
 
-// A colour array: three or more components, one tuple per element.
-bool IsColours(vtkDataArray* a, vtkIdType n)
-{
-  return a && a->GetNumberOfComponents() >= 3 && a->GetNumberOfTuples() == n;
-}
-
-// Face colours (red, green, blue on a PLY's faces, as MeshLab, CloudCompare and CAD exports write
-// them) were dropped and the scene rendered grey. When the points carry no colours, each triangle
-// gets corners of its own, coloured as its face (the faces are then shaded flat).
-vtkSmartPointer<vtkPolyData> FaceColoursOnCorners(vtkPolyData* pd)
-{
-  vtkDataArray* fc = pd->GetCellData()->GetScalars();
-  if (IsColours(pd->GetPointData()->GetScalars(), pd->GetNumberOfPoints()) || !IsColours(fc, pd->GetNumberOfCells()))
-  {
-    return nullptr;
-  }
-  vtkNew<vtkTriangleFilter> tri; // carries each polygon's and strip's colour to its triangles
-  tri->SetInputData(pd);
-  tri->PassVertsOff();
-  tri->PassLinesOff();
-  tri->Update();
-  vtkPolyData* t = tri->GetOutput();
-  vtkDataArray* tc = t->GetCellData()->GetScalars();
-  if (!IsColours(tc, t->GetNumberOfCells()))
-  {
-    return nullptr;
-  }
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataType(t->GetPoints()->GetDataType());
-  vtkSmartPointer<vtkDataArray> colours = vtk::TakeSmartPointer(tc->NewInstance());
-  colours->SetNumberOfComponents(tc->GetNumberOfComponents());
-  vtkNew<vtkCellArray> polys;
-  vtkIdType n;
-  const vtkIdType* ids;
-  for (vtkIdType c = 0; c < t->GetNumberOfCells(); ++c)
-  {
-    t->GetCellPoints(c, n, ids);
-    if (n != 3)
-    {
-      continue;
-    }
-    const vtkIdType corners[3] = { points->InsertNextPoint(t->GetPoint(ids[0])),
-      points->InsertNextPoint(t->GetPoint(ids[1])), points->InsertNextPoint(t->GetPoint(ids[2])) };
-    for (int k = 0; k < 3; ++k)
-    {
-      colours->InsertNextTuple(tc->GetTuple(c));
-    }
-    polys->InsertNextCell(3, corners);
-  }
-  out->SetPoints(points);
-  out->SetPolys(polys);
-  out->GetPointData()->SetScalars(colours);
-  return out;
-}
-
 int Run(const cli::Options& o, const std::string& input)
 {
   const cli::View view = cli::ViewFromOptions(o);
@@ -123,11 +64,8 @@ int Run(const cli::Options& o, const std::string& input)
   art::Progress progress(bar.Callback());
 
   auto t0 = std::chrono::steady_clock::now();
-  vtkSmartPointer<vtkPolyData> pd = art::LoadSurface(input);
-  if (auto exploded = FaceColoursOnCorners(pd))
-  {
-    pd = exploded;
-  }
+  // Face colours move onto corners of each face's own (SurfaceColours.h).
+  vtkSmartPointer<vtkPolyData> pd = art::WithColoursOnPoints(art::LoadSurface(input));
   // A scene far from the origin is traced about its centre (TriangleStore::OriginFor): the camera
   // and lights given on the command line move with it.
   double pb[6];
@@ -226,22 +164,7 @@ int Run(const cli::Options& o, const std::string& input)
     s.lights = art::HeadAndKeyLights(
       art::Vec3(vcam->GetPosition()), art::Vec3(vcam->GetFocalPoint()), art::Vec3(vcam->GetViewUp()));
   }
-  std::vector<std::array<float, 3>> colors;
-  if (vtkDataArray* sc = pd->GetPointData()->GetScalars())
-  {
-    if (IsColours(sc, pd->GetNumberOfPoints()))
-    {
-      const double scale = sc->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
-      colors.resize(static_cast<size_t>(sc->GetNumberOfTuples()));
-      for (vtkIdType i = 0; i < sc->GetNumberOfTuples(); ++i)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          colors[i][k] = float(sc->GetComponent(i, k) * scale);
-        }
-      }
-    }
-  }
+  std::vector<std::array<float, 3>> colors = art::PointColours(pd);
   art::SurfaceTracer tracer(*acc, s);
   if (!colors.empty())
   {

@@ -6,6 +6,7 @@
 #ifdef ART_HAVE_TriangleGrid
 #include "Accelerator.h"
 #include "Camera.h"
+#include "SurfaceColours.h"
 #include "SurfaceTracer.h"
 #include "TriangleStore.h"
 #endif
@@ -38,9 +39,10 @@ struct SurfaceTraceView::Internals
   double Last = 0;
 };
 
-SurfaceTraceView::SurfaceTraceView(vtkPolyData* pd, const std::string& file)
+SurfaceTraceView::SurfaceTraceView(vtkPolyData* input, const std::string& file)
   : Impl(new Internals)
 {
+  vtkSmartPointer<vtkPolyData> pd = art::WithColoursOnPoints(input); // face colours onto corners
   double b[6];
   pd->GetBounds(b);
   Impl->Origin = art::TriangleStore::OriginFor(art::Box3::FromBounds(b));
@@ -53,21 +55,7 @@ SurfaceTraceView::SurfaceTraceView(vtkPolyData* pd, const std::string& file)
       file);
   }
   Impl->Acc = art::MakeAccelerator(Impl->Store);
-  if (vtkDataArray* sc = pd->GetPointData()->GetScalars())
-  {
-    if (sc->GetNumberOfComponents() >= 3 && sc->GetNumberOfTuples() == pd->GetNumberOfPoints())
-    {
-      const double scale = sc->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
-      Impl->Colors.resize(static_cast<size_t>(sc->GetNumberOfTuples()));
-      for (vtkIdType i = 0; i < sc->GetNumberOfTuples(); ++i)
-      {
-        for (int k = 0; k < 3; ++k)
-        {
-          Impl->Colors[i][k] = static_cast<float>(sc->GetComponent(i, k) * scale);
-        }
-      }
-    }
-  }
+  Impl->Colors = art::PointColours(pd);
   Impl->Texture->SetInputData(Impl->Frame);
   Impl->Texture->InterpolateOff();
 }
@@ -165,9 +153,10 @@ struct SurfaceTraceView::Internals
   vtkNew<vtkActor> Actor;
 };
 
-SurfaceTraceView::SurfaceTraceView(vtkPolyData* pd, const std::string& file)
+SurfaceTraceView::SurfaceTraceView(vtkPolyData* input, const std::string& file)
   : Impl(new Internals)
 {
+  vtkSmartPointer<vtkPolyData> pd = art::WithColoursOnPoints(input); // face colours onto corners
   if (!pd || pd->GetNumberOfPolys() == 0)
   {
     throw art::Error("has no triangles to show", file);

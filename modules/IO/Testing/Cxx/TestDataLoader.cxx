@@ -1,5 +1,6 @@
 #include "DataLoader.h"
 #include "Error.h"
+#include "SurfaceColours.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -198,6 +199,38 @@ TEST(DataLoader, ObjVertexColours)
   EXPECT_EQ(rgb->GetComponent(1, 1), 128);
   std::ofstream(path) << "v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1 1\nf 1 2 3\n"; // one without, one with a w
   EXPECT_EQ(art::LoadSurface(path)->GetPointData()->GetScalars(), nullptr);
+}
+
+// Face colours (tests/data/colours/face-colours.ply: a cube, one colour a face) were dropped by
+// render and the viewer. Each triangle gets corners of its own with its face's colour; a surface
+// whose points carry colours is drawn as it is.
+TEST(DataLoader, FaceColoursMoveOntoCorners)
+{
+  auto cube = art::LoadSurface(std::string(ART_SOURCE_DIR) + "/tests/data/colours/face-colours.ply");
+  EXPECT_TRUE(art::PointColours(cube).empty());
+  auto split = art::WithColoursOnPoints(cube);
+  ASSERT_EQ(split->GetNumberOfPolys(), 12);
+  ASSERT_EQ(split->GetNumberOfPoints(), 36);
+  const auto rgb = art::PointColours(split);
+  ASSERT_EQ(rgb.size(), 36u);
+  // The first face (z = 0) is red, the sixth (x = 0) magenta: two triangles each, in file order.
+  for (int c = 0; c < 6; ++c)
+  {
+    EXPECT_EQ(rgb[c][0], 1.f);
+    EXPECT_EQ(rgb[c][1], 0.f);
+    EXPECT_EQ(rgb[c][2], 0.f);
+    double p[3];
+    split->GetPoint(c, p);
+    EXPECT_EQ(p[2], 0.0);
+    EXPECT_EQ(rgb[30 + c][0], 1.f);
+    EXPECT_EQ(rgb[30 + c][1], 0.f);
+    EXPECT_EQ(rgb[30 + c][2], 1.f);
+    split->GetPoint(30 + c, p);
+    EXPECT_EQ(p[0], 0.0);
+  }
+  auto corners = art::LoadSurface(std::string(ART_SOURCE_DIR) + "/tests/data/colours/corner-colours.ply");
+  EXPECT_EQ(art::WithColoursOnPoints(corners).Get(), corners.Get());
+  EXPECT_EQ(art::PointColours(corners).size(), 24u);
 }
 
 // Survey and CAD exports sit far from the origin: vtkOBJReader kept float points, so a 1-unit
