@@ -84,6 +84,7 @@ void Declare(cli::Options& o)
   o.Add("red-no-quadric", 0, "", "reduction: skip VTK's quadric decimation (slow on big volumes)");
   o.Add("red-refinement", 0, "bisection|edge",
     "reduction: newest-vertex bisection, or splitting the edges that remove the most error", "bisection");
+  o.Add("red-relocate", 0, "", "reduction: move each level's vertices off the lattice to lower its error (VertexRelocator)");
 }
 
 struct Row
@@ -140,6 +141,7 @@ int Run(const cli::Options& o)
   opt.Refine = cli::ParseEdgeRefinement(refinement, "--red-refinement") ? art::ReducerOptions::Refinement::EdgeSplit
                                                                           : art::ReducerOptions::Refinement::Bisection;
   opt.Levels = levels;
+  opt.RelocateVertices = o.Flag("red-relocate");
   std::vector<Row> rows(levels.size());
   std::vector<std::vector<double>> times(levels.size());
   std::vector<double> peaks;
@@ -257,6 +259,7 @@ int Run(const cli::Options& o)
     art::ReducerOptions topt;
     topt.TargetTets = timedTets;
     topt.Refine = opt.Refine;
+    topt.RelocateVertices = opt.RelocateVertices;
     for (int r = 0; r <= runs; ++r)
     {
       const long long base = StatusKB("VmRSS");
@@ -301,7 +304,7 @@ int Run(const cli::Options& o)
   cli::Json js;
   js.Set("benchmark", "reduction").Set("input", in).Set("dims",
       std::vector<double>{ double(volume.Dims[0]), double(volume.Dims[1]), double(volume.Dims[2]) })
-    .Set("refinement", refinement).Set("voxels", voxels).Set("scalar_range", std::vector<double>{ volume.Range[0], volume.Range[1] })
+    .Set("refinement", refinement).Set("relocate", opt.RelocateVertices).Set("voxels", voxels).Set("scalar_range", std::vector<double>{ volume.Range[0], volume.Range[1] })
     .Set("machine", cpu).Set("hardware_threads", static_cast<long long>(std::thread::hardware_concurrency()))
     .Set("threads", art::GetThreadCount()).Set("date", date).Set("commit", commit).Set("runs", runs)
     .Set("ours_peak_mb", ourPeak.median).Set("ours_peak_mb_min", ourPeak.lo).Set("ours_peak_mb_max", ourPeak.hi)
@@ -321,7 +324,7 @@ int Run(const cli::Options& o)
   md << "# Reduction benchmark\n\n" << in << ": " << volume.Dims[0] << " x " << volume.Dims[1] << " x "
      << volume.Dims[2] << " = " << voxels << " voxels, range " << volume.Range[0] << " .. " << volume.Range[1]
      << " (HU). " << cpu << ", " << art::GetThreadCount() << " threads, commit " << commit << ", " << date
-     << ". Refinement: " << refinement << ". Times: median of " << runs << " runs after a warm-up [min-max]; ours are cumulative over one nested run.\n\n";
+     << ". Refinement: " << refinement << (opt.RelocateVertices ? ", vertices relocated" : "") << ". Times: median of " << runs << " runs after a warm-up [min-max]; ours are cumulative over one nested run.\n\n";
   md << "| level | tets | verts | ours RMS | ours max | ours s | quadric tets | quadric RMS | quadric RMS covered | quadric max | quadric s | uniform verts | uniform RMS | uniform max | RMS vs quadric | RMS vs uniform | min dihedral | radius ratio min / mean |\n";
   md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   std::ostringstream like; // ours and the quadric at its own tet count, on the voxels it covers

@@ -55,6 +55,8 @@ void Declare(cli::Options& o)
   o.Add("refinement", 0, "bisection|edge",
     "bisection: newest-vertex, near-regular tets; edge: split the edges that remove the most error "
     "(thin tets along sharp surfaces, lower error per tet, slower)", "bisection");
+  o.Add("relocate", 0, "", "move each output's vertices off the bisection lattice toward the surfaces they fit "
+    "(lower error at the same tets; levels no longer nested; slower)");
   o.Add("clamp", 0, "", "clamp each vertex value to the range of the voxels under its tets (no overshoot at sharp edges; for maximum-intensity projection)");
   o.Add("tf", 0, "NAME|FILE",
     "reduce for this transfer function's opacity (a preset, e.g. ct-skin-bone, or a file of "
@@ -88,6 +90,7 @@ int Run(const cli::Options& o)
                                                              : art::ReducerOptions::Refinement::Bisection;
   opt.RefineFraction = o.GetDouble("refine-fraction");
   opt.ClampToVoxels = o.Flag("clamp");
+  opt.RelocateVertices = o.Flag("relocate");
   opt.SolverTolerance = o.GetDouble("tolerance");
   if (!(opt.RefineFraction >= 0.0 && opt.RefineFraction <= 4.0) || !(opt.SolverTolerance > 0 && opt.SolverTolerance < 1))
   {

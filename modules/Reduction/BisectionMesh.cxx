@@ -18,6 +18,7 @@ void BisectionMesh::InitKuhn(const int dims[3], const int cubes[3])
   Versions.clear();
   VertexTets.clear();
   EdgeSplits = false;
+  Moved = false;
   int n[3];
   std::vector<int64_t> ticks[3];
   for (int a = 0; a < 3; ++a)
@@ -113,6 +114,10 @@ bool BisectionMesh::CanSplitEdge(int a, int b, int quarters) const
 
 void BisectionMesh::SplitEdge(int a, int b, std::vector<int>& touched, int quarters)
 {
+  if (Moved)
+  {
+    throw Error("internal: edge split after vertex relocation");
+  }
   if (a == b || !CanSplitEdge(a, b, quarters))
   {
     throw Error("refinement reached the lattice resolution");
@@ -192,9 +197,10 @@ void BisectionMesh::TetsWithEdge(int a, int b, std::vector<int>& out) const
 
 void BisectionMesh::Refine(int t, std::vector<int>& touched)
 {
-  if (EdgeSplits)
+  if (EdgeSplits || Moved)
   {
-    throw Error("internal: newest-vertex bisection after free edge splits");
+    throw Error(EdgeSplits ? "internal: newest-vertex bisection after free edge splits"
+                           : "internal: bisection after vertex relocation");
   }
   RefineRecursive(t, touched, 0);
 }
@@ -290,5 +296,17 @@ void BisectionMesh::Bisect(int t, int mid, std::vector<int>& touched)
   VertexTets[mid].push_back(n);
   touched.push_back(t);
   touched.push_back(n);
+}
+void BisectionMesh::MoveVertex(int v, const LatticePoint& p)
+{
+  if (!Moved)
+  {
+    Moved = true;
+  }
+  Verts[v] = p;
+  for (int t : VertexTets[v])
+  {
+    ++Versions[t];
+  }
 }
 } // namespace art

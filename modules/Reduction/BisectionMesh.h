@@ -72,6 +72,13 @@ public:
   /// Tets that have both a and b as corners, ascending.
   void TetsWithEdge(int a, int b, std::vector<int>& out) const;
 
+  /// Puts vertex v at p (any lattice point; VertexRelocator checks that no tet around it flips
+  /// or flattens) and bumps the versions of its tets. The mesh then leaves the bisection
+  /// hierarchy: Refine and SplitEdge are refused afterwards (call StopRefinement first when
+  /// moving vertices with no tet in common from several threads).
+  void MoveVertex(int v, const LatticePoint& p);
+  void StopRefinement() { Moved = true; }
+
 private:
   std::array<int, 2> RefinementEdge(int t) const;
   void Bisect(int t, int mid, std::vector<int>& touched);
@@ -86,6 +93,7 @@ private:
   std::vector<uint32_t> Versions;
   std::vector<std::vector<int>> VertexTets; // tets around each vertex, for edge patches
   bool EdgeSplits = false;                  // SplitEdge was used: the Maubach tags are void
+  bool Moved = false;                       // MoveVertex was used: no more refinement
 };
 } // namespace art
 

@@ -7,6 +7,7 @@
 #include "MeanSpacing.h"
 #include "OpacityImportance.h"
 #include "Progress.h"
+#include "VertexRelocator.h"
 
 #include <algorithm>
 #include <chrono>
@@ -204,7 +205,28 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
 
   std::vector<ReducedMesh> out;
   auto emit = [&](long long budget, bool reached, int level) {
-    ReducedMesh m = Snapshot(volume, mesh, fit, x, Opt.ClampToVoxels);
+    ReducedMesh m;
+    if (Opt.RelocateVertices)
+    {
+      // On a copy: the next level refines the lattice mesh, not the moved one.
+      BisectionMesh moved = mesh;
+      std::vector<double> y = x;
+      LeastSquaresFit::Extend(moved, y);
+      RelocationOptions ro;
+      ro.Sweeps = Opt.RelocateSweeps;
+      ro.QualityFloor = Opt.RelocateQualityFloor;
+      VertexRelocator::Relocate(moved, volume, y, ro);
+      LeastSquaresFit refit(volume, Opt.Regularization, importance.get());
+      std::vector<int> every(static_cast<size_t>(moved.NumberOfTets()));
+      std::iota(every.begin(), every.end(), 0);
+      refit.UpdateMoments(moved, every, &y);
+      refit.Solve(moved, y, Opt.SolverTolerance);
+      m = Snapshot(volume, moved, refit, y, Opt.ClampToVoxels);
+    }
+    else
+    {
+      m = Snapshot(volume, mesh, fit, x, Opt.ClampToVoxels);
+    }
     m.TargetTets = budget;
     m.TargetError = errorBound;
     m.TargetReached = reached;

@@ -82,6 +82,12 @@ struct ReducerOptions
   double ImportanceFloor = 0.02; ///< weight of voxels whose neighbourhood meets no opacity change
   int ImportanceRadius = 2;      ///< neighbourhood (2 r + 1)^3 voxels whose scalar range counts
   int ReweighSteps = 3;          ///< weighted fit: extra reweighting steps on the coarse mesh
+  /// Each output level's vertices are moved off the lattice to lower their star's error
+  /// (VertexRelocator), then the fit is solved again on the moved mesh. The refinement goes on
+  /// from the unmoved mesh, so levels are no longer nested.
+  bool RelocateVertices = false;
+  int RelocateSweeps = 3;           ///< Gauss-Seidel sweeps of the relocation
+  double RelocateQualityFloor = 0.2; ///< shape floor a moved tet keeps (VertexRelocator)
 };
 
 /// One output level: a tet mesh with the fitted values and its errors against the voxels.

@@ -7,6 +7,7 @@
 #include "BisectionMesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace art
@@ -87,11 +88,11 @@ public:
           A[q] = i128(N[q][1]) * (int64_t(j) * S) + i128(N[q][2]) * (int64_t(k) * S) + C[q];
           if (B[q] > 0) // sx = +1 and n.x > 0: a zero counts as inside
           {
-            lo = std::max<i128>(lo, CeilDiv(-A[q], B[q]));
+            lo = std::max<i128>(lo, FirstNonNegative(A[q], B[q], i0 - 1, i1 + 1));
           }
           else if (B[q] < 0)
           {
-            hi = std::min<i128>(hi, CeilDiv(A[q], -B[q]) - 1);
+            hi = std::min<i128>(hi, FirstNonNegative(-A[q], -B[q], i0 - 1, i1 + 1) - 1);
           }
           else if (!(A[q] > 0 || (A[q] == 0 && Tie(0, N[q][1] * sy, N[q][2] * sz))))
           {
@@ -105,8 +106,8 @@ public:
           double l[4], dl[4];
           for (int q = 0; q < 4; ++q)
           {
-            l[q] = static_cast<double>(A[q] + B[q] * ilo) * invV[q];
-            dl[q] = static_cast<double>(B[q]) * invV[q];
+            l[q] = ToDouble(A[q] + B[q] * ilo) * invV[q];
+            dl[q] = ToDouble(B[q]) * invV[q];
           }
           for (int i = ilo; i <= ihi; ++i)
           {
@@ -125,7 +126,7 @@ public:
           {
             const i128 D = A[q] + B[q] * last;
             in = D > 0 || (D == 0 && Tie(-N[q][0], N[q][1] * sy, N[q][2] * sz));
-            lam[q] = static_cast<double>(D) * invV[q];
+            lam[q] = ToDouble(D) * invV[q];
           }
           if (in)
           {
@@ -150,9 +151,29 @@ public:
 
 private:
   static int64_t FloorDiv(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-  static i128 CeilDiv(i128 a, i128 b) // b > 0
+  // The smallest x in [L, H] with a + b x >= 0 (b > 0), or L / H when it lies below / above:
+  // a floating-point guess corrected by exact products (no 128-bit division per row). Clamped,
+  // it bounds a row [L + 1, H - 1] exactly as the unclamped ceiling would.
+  static i128 FirstNonNegative(i128 a, i128 b, int64_t L, int64_t H)
   {
-    return a >= 0 ? (a + b - 1) / b : -((-a) / b);
+    double g = std::ceil(-ToDouble(a) / ToDouble(b));
+    g = g >= double(L) ? (g <= double(H) ? g : double(H)) : double(L);
+    i128 x = static_cast<int64_t>(g);
+    while (x > L && a + b * (x - 1) >= 0)
+    {
+      --x;
+    }
+    while (x < H && a + b * x < 0)
+    {
+      ++x;
+    }
+    return x;
+  }
+  // Correctly rounded either way; the 64-bit conversion is inline, the 128-bit one a call.
+  static double ToDouble(i128 a)
+  {
+    constexpr i128 lim = i128(1) << 62;
+    return (a < lim && a > -lim) ? static_cast<double>(static_cast<int64_t>(a)) : static_cast<double>(a);
   }
   // Sign of the first non-zero component: is the perturbed point on the inner side?
   static bool Tie(int64_t x, int64_t y, int64_t z) { return x != 0 ? x > 0 : (y != 0 ? y > 0 : z > 0); }

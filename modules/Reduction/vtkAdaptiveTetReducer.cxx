@@ -106,6 +106,7 @@ int vtkAdaptiveTetReducer::RequestData(
   opt.ErrorRelative = this->ErrorRelative;
   opt.RefineFraction = this->RefineFraction;
   opt.ClampToVoxels = this->ClampToVoxels;
+  opt.RelocateVertices = this->RelocateVertices;
   opt.SolverTolerance = this->SolverTolerance;
   opt.Refine = this->Refinement == EDGE_SPLIT ? art::ReducerOptions::Refinement::EdgeSplit
                                               : art::ReducerOptions::Refinement::Bisection;
@@ -201,6 +202,7 @@ void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ErrorRelative: " << this->ErrorRelative << "\n";
   os << indent << "RefineFraction: " << this->RefineFraction << "\n";
   os << indent << "ClampToVoxels: " << this->ClampToVoxels << "\n";
+  os << indent << "RelocateVertices: " << this->RelocateVertices << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "Refinement: " << (this->Refinement == EDGE_SPLIT ? "EDGE_SPLIT" : "BISECTION") << "\n";
   os << indent << "Levels: " << this->Levels.size() << "\n";

@@ -186,3 +186,18 @@ r.Update()
 assert messages and r.GetOutput().GetNumberOfCells() == 0
 
 print("ok", errors, counts, runs)
+
+# Vertex relocation: a step off the coarse grid is fitted far better at the same tet count.
+step = image((25, 11, 11), lambda x, y, z: 1000.0 if x > 7.5 else 0.0)
+reloc = []
+for relocate in (False, True):
+    r = adaptivert.vtkAdaptiveTetReducer()
+    r.SetInputData(step)
+    r.SetTargetTets(300)
+    r.SetRelocateVertices(relocate)
+    assert r.GetRelocateVertices() == relocate
+    r.Update()
+    assert r.GetOutput().GetBounds() == step.GetBounds()
+    reloc.append((r.GetOutput().GetNumberOfCells(), r.GetRMSError()))
+assert reloc[1][0] == reloc[0][0], reloc
+assert reloc[1][1] < 0.8 * reloc[0][1], reloc

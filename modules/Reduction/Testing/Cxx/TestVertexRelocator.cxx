@@ -1,0 +1,211 @@
+// Vertex relocation (VertexRelocator, ReducerOptions::RelocateVertices): on the CT the error
+// falls and never rises, tets keep their orientation, box corners, edges and faces are kept,
+// every voxel centre stays in exactly one tet; a sharp step pulls vertices onto it; the same
+// result for any thread count; a moved mesh refuses further bisection.
+#include "BisectionMesh.h"
+#include "DataLoader.h"
+#include "Error.h"
+#include "LeastSquaresFit.h"
+#include "ReducerVTK.h"
+#include "ReductionFixtures.h"
+#include "TetReducer.h"
+#include "VertexRelocator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+using fixtures::ExpectEachVoxelOwnedOnce;
+using fixtures::SignedVolume6;
+
+namespace
+{
+// A Kuhn mesh of `cubes`, bisected `rounds` times everywhere, with its least-squares fit.
+void FittedMesh(const art::VoxelVolume& vol, const int cubes[3], int rounds, art::BisectionMesh& mesh,
+  std::vector<double>& x)
+{
+  mesh.InitKuhn(vol.Dims, cubes);
+  for (int r = 0; r < rounds; ++r)
+  {
+    const int nt = mesh.NumberOfTets();
+    std::vector<uint32_t> version(nt);
+    for (int t = 0; t < nt; ++t)
+    {
+      version[t] = mesh.Version(t);
+    }
+    std::vector<int> touched;
+    for (int t = 0; t < nt; ++t)
+    {
+      if (mesh.Version(t) == version[t])
+      {
+        mesh.Refine(t, touched);
+      }
+    }
+  }
+  art::LeastSquaresFit fit(vol);
+  std::vector<int> all(mesh.NumberOfTets());
+  std::iota(all.begin(), all.end(), 0);
+  fit.UpdateMoments(mesh, all);
+  fit.Solve(mesh, x, 1e-10);
+}
+
+double Rms(const art::VoxelVolume& vol, const art::BisectionMesh& mesh, const std::vector<double>& x)
+{
+  art::LeastSquaresFit fit(vol);
+  return fit.VoxelErrors(mesh, x).Rms;
+}
+} // namespace
+
+TEST(VertexRelocator, LowersTheCTErrorAndKeepsAValidPartitionOfTheBox)
+{
+  auto img = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/data/ct-head-128.mha");
+  const art::VoxelVolume ct = art::VolumeFromImage(img);
+  // The middle 64 x 64 of every slice (skin, bone, air and brain; a quarter of the cost).
+  art::VoxelVolume vol = ct;
+  vol.Dims[0] = vol.Dims[1] = 64;
+  vol.Float.clear();
+  vol.Double.clear();
+  for (int k = 0; k < ct.Dims[2]; ++k)
+  {
+    for (int j = 32; j < 96; ++j)
+    {
+      for (int i = 32; i < 96; ++i)
+      {
+        const double f = ct.Value(i + ct.Dims[0] * (j + static_cast<long long>(ct.Dims[1]) * k));
+        ct.DoubleValues ? vol.Double.push_back(f) : vol.Float.push_back(static_cast<float>(f));
+      }
+    }
+  }
+  vol.Validate();
+  const int cubes[3] = { 4, 4, 3 };
+  art::BisectionMesh mesh;
+  std::vector<double> x;
+  FittedMesh(vol, cubes, 3, mesh, x);
+  const art::BisectionMesh before = mesh;
+  const double rmsBefore = Rms(vol, mesh, x);
+  art::RelocationOptions o;
+  o.Sweeps = 2;
+  const art::RelocationStats s = art::VertexRelocator::Relocate(mesh, vol, x, o);
+  EXPECT_GT(s.Moved, mesh.NumberOfVertices() / 4);
+  EXPECT_NEAR(std::sqrt(s.SseBefore / vol.NumberOfVoxels()), rmsBefore, 1e-6 * rmsBefore);
+  EXPECT_LE(s.SseAfter, s.SseBefore);
+  const double rmsAfter = Rms(vol, mesh, x);
+  EXPECT_NEAR(std::sqrt(s.SseAfter / vol.NumberOfVoxels()), rmsAfter, 1e-6 * rmsAfter);
+  EXPECT_LT(rmsAfter, 0.93 * rmsBefore) << rmsBefore << " -> " << rmsAfter;
+  std::printf("CT crop: %d tets, RMS %.2f -> %.2f, %lld moves of %d vertices\n", mesh.NumberOfTets(), rmsBefore, rmsAfter, s.Moved, mesh.NumberOfVertices());
+
+  // The global refit on the moved mesh can only lower it further.
+  art::LeastSquaresFit fit(vol);
+  std::vector<int> all(mesh.NumberOfTets());
+  std::iota(all.begin(), all.end(), 0);
+  fit.UpdateMoments(mesh, all);
+  fit.Solve(mesh, x, 1e-10);
+  EXPECT_LE(fit.VoxelErrors(mesh, x).Rms, rmsAfter * (1 + 1e-9));
+
+  // Same tets, same orientation, none flat; corners fixed, box faces and edges kept.
+  ASSERT_EQ(mesh.NumberOfTets(), before.NumberOfTets());
+  for (int t = 0; t < mesh.NumberOfTets(); ++t)
+  {
+    ASSERT_EQ(mesh.Tet(t), before.Tet(t));
+    const double a = SignedVolume6(before, t), b = SignedVolume6(mesh, t);
+    ASSERT_NE(b, 0.0);
+    ASSERT_EQ(a > 0, b > 0) << "tet " << t << " flipped";
+  }
+  int moved = 0;
+  for (int v = 0; v < mesh.NumberOfVertices(); ++v)
+  {
+    const auto &p = before.Vertex(v), &q = mesh.Vertex(v);
+    moved += (p.x != q.x || p.y != q.y || p.z != q.z) ? 1 : 0;
+    for (int d = 0; d < 3; ++d)
+    {
+      const int64_t hi = (vol.Dims[d] - 1) * art::BisectionMesh::Scale;
+      if (p[d] == 0 || p[d] == hi)
+      {
+        EXPECT_EQ(q[d], p[d]) << "vertex " << v << " left the box face";
+      }
+      EXPECT_GE(q[d], 0);
+      EXPECT_LE(q[d], hi);
+    }
+  }
+  EXPECT_GT(moved, mesh.NumberOfVertices() / 4);
+  EXPECT_TRUE(fixtures::Check(mesh).Valid());
+  ExpectEachVoxelOwnedOnce(mesh, vol.Dims);
+
+  // Off the lattice, bisection is refused rather than made inexact.
+  std::vector<int> touched;
+  EXPECT_THROW(mesh.Refine(0, touched), art::Error);
+}
+
+TEST(VertexRelocator, VerticesLandOnASharpStep)
+{
+  // 0 below x = 10.5 voxels, 1000 above; the coarse vertices sit at x = 0, 4, 8, 12, ...: a
+  // linear fit can only match the step with vertices between the voxels at 10 and 11.
+  const int d[3] = { 33, 13, 13 };
+  const double spacing[3] = { 1, 1, 1 }, origin[3] = { 0, 0, 0 };
+  const art::VoxelVolume vol =
+    art::VolumeFromImage(fixtures::Field(d, spacing, origin, [](double x, double, double) { return x > 10.5 ? 1000.0 : 0.0; }));
+  const int cubes[3] = { 8, 3, 3 };
+  art::BisectionMesh mesh;
+  std::vector<double> x;
+  FittedMesh(vol, cubes, 0, mesh, x);
+  const double rmsBefore = Rms(vol, mesh, x);
+  auto near = [&]() {
+    int n = 0;
+    for (int v = 0; v < mesh.NumberOfVertices(); ++v)
+    {
+      const double px = double(mesh.Vertex(v).x) / art::BisectionMesh::Scale;
+      n += (px >= 9.99 && px <= 11.01) ? 1 : 0;
+    }
+    return n;
+  };
+  ASSERT_EQ(near(), 0);
+  art::RelocationOptions o;
+  o.Sweeps = 6;
+  art::VertexRelocator::Relocate(mesh, vol, x, o);
+  art::LeastSquaresFit fit(vol);
+  std::vector<int> all(mesh.NumberOfTets());
+  std::iota(all.begin(), all.end(), 0);
+  fit.UpdateMoments(mesh, all);
+  fit.Solve(mesh, x, 1e-10);
+  const double rmsAfter = fit.VoxelErrors(mesh, x).Rms;
+  EXPECT_LT(rmsAfter, 0.5 * rmsBefore) << rmsBefore << " -> " << rmsAfter;
+  EXPECT_GE(near(), 16) << "of " << mesh.NumberOfVertices() << " vertices";
+  std::printf("step: RMS %.2f -> %.2f, %d of %d vertices on the step\n", rmsBefore, rmsAfter, near(), mesh.NumberOfVertices());
+  ExpectEachVoxelOwnedOnce(mesh, vol.Dims);
+}
+
+TEST(VertexRelocator, ReducerOptionIsDeterministicValidAndLowersTheError)
+{
+  const int d[3] = { 40, 34, 30 };
+  const double spacing[3] = { 1.0, 0.8, 1.5 }, origin[3] = { 2.0, -1.0, 0.5 };
+  const art::VoxelVolume vol = art::VolumeFromImage(fixtures::Field(d, spacing, origin, [](double x, double y, double z) {
+    const double dx = x - 21.3, dy = y - 12.1, dz = z - 22.7;
+    return dx * dx + dy * dy + dz * dz < 11.2 * 11.2 ? 1000.0 : 0.0;
+  }));
+  art::ReducerOptions opt;
+  opt.TargetTets = 2000;
+  opt.Levels = { 500 };
+  const auto plain = art::TetReducer(opt).Run(vol);
+  opt.RelocateVertices = true;
+  const int threads = art::GetThreadCount();
+  art::SetThreadCount(1);
+  const auto one = art::TetReducer(opt).Run(vol);
+  art::SetThreadCount(2);
+  const auto two = art::TetReducer(opt).Run(vol);
+  art::SetThreadCount(threads);
+  ASSERT_EQ(one.size(), 2u);
+  ASSERT_EQ(two.size(), 2u);
+  for (int i = 0; i < 2; ++i)
+  {
+    EXPECT_EQ(one[i].Tets, two[i].Tets);
+    EXPECT_EQ(one[i].Points, two[i].Points);
+    EXPECT_EQ(one[i].Values, two[i].Values);
+    EXPECT_EQ(one[i].Rms, two[i].Rms);
+    fixtures::ExpectValid(one[i]);
+    // Same tets as without relocation (the next level refines the unmoved mesh), lower error.
+    EXPECT_EQ(one[i].NumberOfTets(), plain[i].NumberOfTets());
+    EXPECT_LT(one[i].Rms, 0.9 * plain[i].Rms) << plain[i].Rms << " -> " << one[i].Rms;
+  }
+}

@@ -1,0 +1,44 @@
+// VertexRelocator: moves the vertices of a fitted mesh off the bisection lattice to where their
+// star fits the voxels better (feature-aligned vertices, as quadric decimation gets by placing
+// them freely; cf. Garland & Zhou, "Quadric-based simplification in any dimension", 2005).
+#ifndef art_VertexRelocator_h
+#define art_VertexRelocator_h
+
+#include "AdaptiveRTReductionModule.h"
+#include "BisectionMesh.h"
+#include "VoxelVolume.h"
+
+#include <vector>
+
+namespace art
+{
+struct RelocationOptions
+{
+  int Sweeps = 3;            ///< Gauss-Seidel sweeps over the vertices
+  double QualityFloor = 0.2; ///< a moved tet keeps 6 sqrt(2) V / l_rms^3 >= min(this, its value before)
+};
+
+struct RelocationStats
+{
+  long long Visited = 0, Moved = 0; ///< vertex visits over all sweeps, and accepted moves
+  double SseBefore = 0, SseAfter = 0; ///< sum of squared errors over every voxel, before / after the sweeps
+  int Sweeps = 0;
+};
+
+class ADAPTIVERTREDUCTION_EXPORT VertexRelocator
+{
+public:
+  /// Relocates the vertices of `mesh` (the fit `x` on it is updated with it). Each visit tries
+  /// moves of one vertex along the voxel gradient, the axes and toward its star's centroid,
+  /// at fractions of the distance that would flatten a tet of its star; the best is kept when
+  /// the star's squared error, with that vertex's value refitted (the others fixed), drops, no
+  /// tet of the star flips or flattens (exact integer orientation on the lattice) and none gets
+  /// worse than the quality floor. Box corners stay, vertices on a box edge or face move only
+  /// within it, so the mesh stays a conforming tetrahedrisation of the box and the lattice
+  /// raster still gives each voxel centre to exactly one tet. Sequential: deterministic.
+  static RelocationStats Relocate(BisectionMesh& mesh, const VoxelVolume& volume, std::vector<double>& x,
+    const RelocationOptions& options = {});
+};
+} // namespace art
+
+#endif
