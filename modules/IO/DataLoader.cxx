@@ -585,14 +585,14 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   const std::string e = LowerExtension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
   auto pd = vtkSmartPointer<vtkPolyData>::New();
-  std::vector<double> plyDoubles;
+  std::vector<double> plyDoubles, plyColours;
   if (e == ".obj")
   {
     pd = ReadObj(path); // vtkOBJReader drops faces (see ObjReader.h)
   }
   else if (e == ".ply")
   {
-    CheckPly(path, &plyDoubles);
+    CheckPly(path, &plyDoubles, &plyColours);
     reader = FileReader<vtkPLYReader>(path);
   }
   else if (e == ".stl")
@@ -628,6 +628,23 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
       points->SetPoint(i, &plyDoubles[3 * static_cast<std::size_t>(i)]);
     }
     pd->SetPoints(points);
+  }
+  if (!plyColours.empty() && static_cast<vtkIdType>(plyColours.size()) == 3 * pd->GetNumberOfPoints())
+  {
+    // Floating-point colours as written, not vtkPLYReader's 8-bit casts of them (1.0 read as 1
+    // of 255, so a red mesh rendered black); 0..255 when any exceeds 1, else 0..1.
+    const double hi = *std::max_element(plyColours.begin(), plyColours.end());
+    const double scale = hi > 1 ? 1.0 / 255.0 : 1.0;
+    vtkNew<vtkFloatArray> rgb;
+    rgb->SetName("RGB");
+    rgb->SetNumberOfComponents(3);
+    rgb->SetNumberOfTuples(pd->GetNumberOfPoints());
+    for (std::size_t i = 0; i < plyColours.size(); ++i)
+    {
+      const double v = plyColours[i] * scale;
+      rgb->SetValue(static_cast<vtkIdType>(i), static_cast<float>(std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0));
+    }
+    pd->GetPointData()->SetScalars(rgb);
   }
   if (pd->GetNumberOfPoints() == 0 || pd->GetNumberOfPolys() + pd->GetNumberOfStrips() == 0)
   {

@@ -129,7 +129,7 @@ private:
 // that nothing is missing and that faces name vertices that exist: VTK 9.1 crashes on a short
 // ASCII line and on a face index past the vertex count.
 void CheckBody(std::istream& in, const std::vector<Element>& elements, bool binary, bool bigEndian,
-  const std::string& path, std::vector<double>* xyz)
+  const std::string& path, std::vector<double>* xyz, std::vector<double>* rgb)
 {
   long long vertices = -1;
   for (const Element& e : elements)
@@ -146,36 +146,49 @@ void CheckBody(std::istream& in, const std::vector<Element>& elements, bool bina
     const bool isFace = e.name == "face";
     size_t row = 0; // bytes per instance when no property is a list
     // Double x, y, z of the vertices are kept: vtkPLYReader stores floats, which lose survey
-    // coordinates (a 1 m triangle 2.5e7 m out collapsed to a point).
+    // coordinates (a 1 m triangle 2.5e7 m out collapsed to a point). Floating-point red, green,
+    // blue (channels 3..5) are kept too: vtkPLYReader casts them to 8 bits, so 1.0 became 1/255.
     int axis[16];
     std::fill(axis, axis + 16, -1);
-    size_t at[3] = { 0, 0, 0 };
-    int found = 0; // bit a: axis a is a double
+    size_t at[6] = { 0, 0, 0, 0, 0, 0 };
+    Type type[6];
+    int found = 0; // bit a: channel a is there in a type worth keeping
     for (size_t k = 0; k < e.props.size(); ++k)
     {
       const Property& p = e.props[k];
       const bool isDouble = p.type == "double" || p.type == "float64";
-      const int a = !(xyz && e.name == "vertex" && p.countType.empty() && isDouble && k < 16) ? -1
-        : p.name == "x"                                                                      ? 0
-        : p.name == "y"                                                                      ? 1
-        : p.name == "z"                                                                      ? 2
-                                                                                             : -1;
+      int a = -1;
+      if (e.name == "vertex" && p.countType.empty() && k < 16)
+      {
+        a = (xyz && isDouble) ? (p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1) : -1;
+        if (a < 0 && rgb && p.item.isFloat)
+        {
+          a = p.name == "red" ? 3 : p.name == "green" ? 4 : p.name == "blue" ? 5 : -1;
+        }
+      }
       if (a >= 0 && row != static_cast<size_t>(-1))
       {
         axis[k] = a;
         at[a] = row;
+        type[a] = p.item;
         found |= 1 << a;
       }
       row = (row == static_cast<size_t>(-1) || !p.countType.empty()) ? static_cast<size_t>(-1) : row + p.item.size;
     }
-    const bool keep = found == 7;
+    const bool keep = (found & 7) == 7, keepRgb = (found & 56) == 56;
     if (keep)
     {
       xyz->assign(3 * static_cast<size_t>(e.count), 0.0);
     }
+    if (keepRgb)
+    {
+      rgb->assign(3 * static_cast<size_t>(e.count), 0.0);
+    }
+    auto store = [&](long long i, int a, double v) {
+      (a < 3 ? *xyz : *rgb)[3 * static_cast<size_t>(i) + static_cast<size_t>(a % 3)] = v;
+    };
     if (binary && row != static_cast<size_t>(-1))
     {
-      const Type f64 = TypeOf("double");
       for (long long i = 0; i < e.count; ++i)
       {
         const unsigned char* r = row ? bytes.Get(row) : nullptr;
@@ -185,9 +198,12 @@ void CheckBody(std::istream& in, const std::vector<Element>& elements, bool bina
               " is missing",
             path);
         }
-        for (int a = 0; keep && a < 3; ++a)
+        for (int a = 0; a < 6; ++a)
         {
-          (*xyz)[3 * static_cast<size_t>(i) + a] = Decode(r + at[a], f64, bigEndian);
+          if (a < 3 ? keep : keepRgb)
+          {
+            store(i, a, Decode(r + at[a], type[a], bigEndian));
+          }
         }
       }
       continue;
@@ -243,14 +259,14 @@ void CheckBody(std::istream& in, const std::vector<Element>& elements, bool bina
         double v = 0;
         if (p.countType.empty())
         {
-          const int a = keep && k < 16 ? axis[k] : -1;
+          const int a = k < 16 && axis[k] >= 0 && (axis[k] < 3 ? keep : keepRgb) ? axis[k] : -1;
           if (!next(p.item, a >= 0, v))
           {
             throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " lacks '" + p.name + "'", path);
           }
           if (a >= 0)
           {
-            (*xyz)[3 * static_cast<size_t>(i) + a] = v;
+            store(i, a, v);
           }
           continue;
         }
@@ -283,7 +299,7 @@ void CheckBody(std::istream& in, const std::vector<Element>& elements, bool bina
 }
 } // namespace
 
-void CheckPly(const std::string& path, std::vector<double>* xyz)
+void CheckPly(const std::string& path, std::vector<double>* xyz, std::vector<double>* rgb)
 {
   std::ifstream in(path, std::ios::binary);
   if (!in)
@@ -392,6 +408,10 @@ void CheckPly(const std::string& path, std::vector<double>* xyz)
   {
     xyz->clear();
   }
-  CheckBody(in, layout, binary, bigEndian, path, xyz);
+  if (rgb)
+  {
+    rgb->clear();
+  }
+  CheckBody(in, layout, binary, bigEndian, path, xyz, rgb);
 }
 } // namespace art

@@ -13,8 +13,10 @@ namespace art
 {
 /// Throws art::Error naming `path` when the file is not a well-formed PLY. When the vertices'
 /// x, y and z are doubles and `xyz` is given, it receives them (x y z per vertex; else it is left
-/// empty): vtkPLYReader keeps only floats.
-ADAPTIVERTIO_EXPORT void CheckPly(const std::string& path, std::vector<double>* xyz = nullptr);
+/// empty): vtkPLYReader keeps only floats. Likewise `rgb` receives floating-point red, green and
+/// blue as written (vtkPLYReader casts them to 8 bits: 1.0 became 1 of 255).
+ADAPTIVERTIO_EXPORT void CheckPly(
+  const std::string& path, std::vector<double>* xyz = nullptr, std::vector<double>* rgb = nullptr);
 } // namespace art
 
 #endif

@@ -250,6 +250,53 @@ TEST(DataLoader, ObjKeepsDoublePrecision)
 
 // A PLY of double coordinates (CloudCompare and photogrammetry exports in UTM) kept only
 // vtkPLYReader's floats: a 0.25 m triangle 2.5e7 m out collapsed ("has no triangles to render").
+// Floating-point vertex colours (plyfile and numpy writers use them) were cast to 8 bits by
+// vtkPLYReader: 1.0 read as 1 of 255, so a red mesh rendered black. They are kept as written, in
+// 0..1 (or scaled from 0..255 when a value exceeds 1), ASCII and binary alike.
+TEST(DataLoader, PlyKeepsFloatColours)
+{
+  const float rgb[3][3] = { { 1.f, 0.f, 0.f }, { 0.25f, 0.5f, 0.75f }, { 0.f, 1.f, 1.f } };
+  const std::string header = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                             "property float red\nproperty float green\nproperty float blue\nelement face 1\n"
+                             "property list uchar int vertex_indices\nend_header\n";
+  const std::string ascii = std::string(ART_TEST_OUTPUT) + "/float-colours-ascii.ply";
+  {
+    std::ofstream f(ascii);
+    f << "ply\nformat ascii 1.0\n" << header;
+    for (int i = 0; i < 3; ++i)
+    {
+      f << i % 2 << " " << i / 2 << " 0 " << rgb[i][0] << " " << rgb[i][1] << " " << rgb[i][2] << "\n";
+    }
+    f << "3 0 1 2\n";
+  }
+  const std::string binary = std::string(ART_TEST_OUTPUT) + "/float-colours-binary.ply";
+  {
+    std::ofstream f(binary, std::ios::binary);
+    f << "ply\nformat binary_little_endian 1.0\n" << header;
+    for (int i = 0; i < 3; ++i)
+    {
+      const float xyz[3] = { float(i % 2), float(i / 2), 0.f };
+      f.write(reinterpret_cast<const char*>(xyz), 12);
+      f.write(reinterpret_cast<const char*>(rgb[i]), 12);
+    }
+    const int ids[3] = { 0, 1, 2 };
+    f.put(3);
+    f.write(reinterpret_cast<const char*>(ids), 12);
+  }
+  for (const std::string& path : { ascii, binary })
+  {
+    const auto colours = art::PointColours(art::LoadSurface(path));
+    ASSERT_EQ(colours.size(), 3u) << path;
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_EQ(colours[i][c], rgb[i][c]) << path << " vertex " << i;
+      }
+    }
+  }
+}
+
 TEST(DataLoader, PlyKeepsDoubleCoordinates)
 {
   const double pts[4][3] = { { 25000000.125, -30000000.5, 1000.25 }, { 25000000.375, -30000000.5, 1000.25 },
