@@ -9,6 +9,9 @@
 #include <vtkPolyData.h>
 #include <vtkTriangleFilter.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace art
 {
 namespace
@@ -76,13 +79,25 @@ std::vector<std::array<float, 3>> PointColours(vtkPolyData* pd)
   {
     return colours;
   }
-  const double scale = sc->GetDataType() == VTK_UNSIGNED_CHAR ? 1.0 / 255.0 : 1.0;
+  // 8-bit colours are 0..255 and 16-bit ones (LAS point clouds through PDAL) 0..65535; floating
+  // colours are 0..1, or 0..255 when any exceeds 1 (they were drawn white).
+  double hi = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    hi = std::max(hi, sc->GetRange(k)[1]);
+  }
+  const int type = sc->GetDataType();
+  const double scale = type == VTK_UNSIGNED_CHAR ? 1.0 / 255.0
+    : type == VTK_UNSIGNED_SHORT                 ? 1.0 / 65535.0
+    : hi > 1                                     ? 1.0 / 255.0
+                                                 : 1.0;
   colours.resize(static_cast<std::size_t>(sc->GetNumberOfTuples()));
   for (vtkIdType i = 0; i < sc->GetNumberOfTuples(); ++i)
   {
     for (int k = 0; k < 3; ++k)
     {
-      colours[i][k] = static_cast<float>(sc->GetComponent(i, k) * scale);
+      const double v = sc->GetComponent(i, k) * scale;
+      colours[i][k] = std::isfinite(v) ? static_cast<float>(std::clamp(v, 0.0, 1.0)) : 0.f; // NaN: black
     }
   }
   return colours;

@@ -18,7 +18,8 @@ namespace art
 /// `pd` itself, or, when colours are on its faces and not its points, its triangles each with
 /// corners of their own carrying the face's colour (the faces are then shaded flat).
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkPolyData> WithColoursOnPoints(vtkPolyData* pd);
-/// One RGB per point (8-bit colours scaled to [0, 1]); empty when the points carry no colours.
+/// One RGB per point in [0, 1] (8-bit colours over 255, 16-bit over 65535, floating ones as they
+/// are or over 255 when any exceeds 1); empty when the points carry no colours.
 ADAPTIVERTIO_EXPORT std::vector<std::array<float, 3>> PointColours(vtkPolyData* pd);
 } // namespace art
 

@@ -10,9 +10,13 @@
 #include <vtkSphereSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkPoints.h>
+#include <vtkFloatArray.h>
+#include <vtkUnsignedShortArray.h>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -231,6 +235,44 @@ TEST(DataLoader, FaceColoursMoveOntoCorners)
   auto corners = art::LoadSurface(std::string(ART_SOURCE_DIR) + "/tests/data/colours/corner-colours.ply");
   EXPECT_EQ(art::WithColoursOnPoints(corners).Get(), corners.Get());
   EXPECT_EQ(art::PointColours(corners).size(), 24u);
+}
+
+// 16-bit colours (LAS point clouds through PDAL) and floating colours in 0..255 were drawn white
+// (only 8-bit colours were scaled); a NaN channel is black.
+TEST(DataLoader, PointColoursOfEveryRange)
+{
+  vtkNew<vtkPolyData> pd;
+  vtkNew<vtkPoints> pts;
+  pts->SetNumberOfPoints(2);
+  pd->SetPoints(pts);
+  vtkNew<vtkUnsignedShortArray> wide;
+  wide->SetNumberOfComponents(3);
+  wide->InsertNextTuple3(65535, 0, 32768);
+  wide->InsertNextTuple3(0, 65535, 0);
+  pd->GetPointData()->SetScalars(wide);
+  auto c = art::PointColours(pd);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[0][0], 1.f);
+  EXPECT_NEAR(c[0][2], 0.5, 1e-4);
+  EXPECT_EQ(c[1][1], 1.f);
+  vtkNew<vtkFloatArray> big;
+  big->SetNumberOfComponents(3);
+  big->InsertNextTuple3(255, 51, 0);
+  big->InsertNextTuple3(0, 0, 127.5);
+  pd->GetPointData()->SetScalars(big);
+  c = art::PointColours(pd);
+  EXPECT_EQ(c[0][0], 1.f);
+  EXPECT_NEAR(c[0][1], 0.2, 1e-6);
+  EXPECT_NEAR(c[1][2], 0.5, 1e-6);
+  vtkNew<vtkFloatArray> unit;
+  unit->SetNumberOfComponents(3);
+  unit->InsertNextTuple3(1, 0.25, 0);
+  unit->InsertNextTuple3(std::nan(""), 0, 0.5);
+  pd->GetPointData()->SetScalars(unit);
+  c = art::PointColours(pd);
+  EXPECT_EQ(c[0][1], 0.25f);
+  EXPECT_EQ(c[1][2], 0.5f);
+  EXPECT_EQ(c[1][0], 0.f);
 }
 
 // Survey and CAD exports sit far from the origin: vtkOBJReader kept float points, so a 1-unit
