@@ -2,6 +2,7 @@
 #include "Error.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkPointData.h>
@@ -12,10 +13,13 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -49,6 +53,7 @@ struct Cell
 {
   char kind; // 'f', 'l' or 'p'
   std::size_t first, count; // into Obj::Corners
+  int material;             // into Obj::Materials, -1 before any usemtl
 };
 
 struct Obj
@@ -59,6 +64,8 @@ struct Obj
   std::vector<Cell> Cells;
   std::vector<double> Colors; // r g b per vertex of "v x y z r g b" (photogrammetry exports)
   std::size_t Colored = 0;
+  std::vector<std::string> Libraries, Materials; // mtllib files; usemtl names in order of use
+  int Material = -1;
 };
 
 bool IsSpace(char c)
@@ -157,7 +164,7 @@ Corner ReadCorner(const std::string& item, const Obj& obj, long long line, const
 void ReadCell(char kind, const char* p, Obj& obj, long long line, const std::string& path)
 {
   const char* element = kind == 'f' ? "a face" : kind == 'l' ? "a line" : "a point";
-  Cell cell{ kind, obj.Corners.size(), 0 };
+  Cell cell{ kind, obj.Corners.size(), 0, obj.Material };
   for (p = SkipSpace(p); *p; p = SkipSpace(p))
   {
     const char* e = p;
@@ -251,6 +258,23 @@ Obj Parse(const std::string& path)
     {
       ReadCell(key[0], p, obj, start, path);
     }
+    else if (key == "mtllib" || key == "usemtl")
+    {
+      const std::string name = SkipSpace(p);
+      if (key == "mtllib")
+      {
+        obj.Libraries.push_back(name);
+      }
+      else
+      {
+        const auto at = std::find(obj.Materials.begin(), obj.Materials.end(), name);
+        obj.Material = static_cast<int>(at - obj.Materials.begin());
+        if (at == obj.Materials.end())
+        {
+          obj.Materials.push_back(name);
+        }
+      }
+    }
     if (obj.Count[V] > std::numeric_limits<std::int32_t>::max() || obj.Corners.size() > (std::size_t(1) << 40))
     {
       throw Error("more than 2^31 vertices", path);
@@ -261,6 +285,67 @@ Obj Parse(const std::string& path)
     throw Error("read error", path);
   }
   return obj;
+}
+
+// The diffuse colour (Kd) of each material the faces use, from the .mtl libraries beside the file
+// (SketchUp, Blender and CAD exports colour faces this way); a missing library or colour leaves
+// that material without one.
+std::vector<std::array<double, 3>> DiffuseColours(const Obj& obj, const std::string& path)
+{
+  std::vector<std::array<double, 3>> kd(obj.Materials.size(), { -1, -1, -1 });
+  const std::size_t slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+  std::vector<std::string> files;
+  for (const std::string& names : obj.Libraries)
+  {
+    // One library, or several separated by blanks ("mtllib a.mtl b.mtl").
+    std::ifstream whole(!names.empty() && names[0] == '/' ? names : dir + names);
+    std::istringstream split(names);
+    std::string one;
+    while (!whole && split >> one)
+    {
+      files.push_back(one);
+    }
+    if (whole)
+    {
+      files.push_back(names);
+    }
+  }
+  for (const std::string& lib : files)
+  {
+    std::ifstream in(!lib.empty() && lib[0] == '/' ? lib : dir + lib);
+    std::string line;
+    int current = -1;
+    while (std::getline(in, line))
+    {
+      const char* p = SkipSpace(line.c_str());
+      const char* k = p;
+      while (*p && !IsSpace(*p))
+      {
+        ++p;
+      }
+      const std::string key(k, p);
+      if (key == "newmtl")
+      {
+        std::string name = SkipSpace(p);
+        while (!name.empty() && IsSpace(name.back()))
+        {
+          name.pop_back();
+        }
+        const auto at = std::find(obj.Materials.begin(), obj.Materials.end(), name);
+        current = at == obj.Materials.end() ? -1 : static_cast<int>(at - obj.Materials.begin());
+      }
+      else if (key == "Kd" && current >= 0)
+      {
+        double v[3];
+        if (ParseUpTo(p, v, 3) == 3)
+        {
+          kd[current] = { std::clamp(v[0], 0.0, 1.0), std::clamp(v[1], 0.0, 1.0), std::clamp(v[2], 0.0, 1.0) };
+        }
+      }
+    }
+  }
+  return kd;
 }
 
 vtkSmartPointer<vtkDataArray> Attribute(int field, const char* name)
@@ -371,6 +456,36 @@ vtkSmartPointer<vtkPolyData> ReadObj(const std::string& path)
     vtkCellArray* ca = cells[cell.kind == 'p' ? 0 : cell.kind == 'l' ? 1 : 2];
     ca->InsertNextCell(static_cast<vtkIdType>(cell.count), &ids[cell.first]);
   }
+  // Material colours on the cells (in vtkPolyData's order: verts, lines, polys) when every face
+  // has a material with a diffuse colour, as vertex colours are kept only when every vertex has one.
+  vtkSmartPointer<vtkUnsignedCharArray> faceRgb;
+  if (!obj.Materials.empty() && cells[2]->GetNumberOfCells() > 0)
+  {
+    const auto kd = DiffuseColours(obj, path);
+    bool all = true;
+    for (const Cell& cell : obj.Cells)
+    {
+      all = all && (cell.kind != 'f' || (cell.material >= 0 && kd[cell.material][0] >= 0));
+    }
+    if (all)
+    {
+      faceRgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+      faceRgb->SetName("RGB");
+      faceRgb->SetNumberOfComponents(3);
+      for (char kind : { 'p', 'l', 'f' })
+      {
+        for (const Cell& cell : obj.Cells)
+        {
+          if (cell.kind == kind)
+          {
+            const std::array<double, 3> c = cell.material >= 0 && kd[cell.material][0] >= 0
+              ? kd[cell.material] : std::array<double, 3>{ 0, 0, 0 };
+            faceRgb->InsertNextTuple3(std::round(255 * c[0]), std::round(255 * c[1]), std::round(255 * c[2]));
+          }
+        }
+      }
+    }
+  }
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   pd->SetPoints(points);
   pd->SetVerts(cells[0]);
@@ -387,6 +502,10 @@ vtkSmartPointer<vtkPolyData> ReadObj(const std::string& path)
   if (rgb)
   {
     pd->GetPointData()->SetScalars(rgb);
+  }
+  if (faceRgb)
+  {
+    pd->GetCellData()->SetScalars(faceRgb);
   }
   return pd;
 }

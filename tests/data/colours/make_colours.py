@@ -16,3 +16,17 @@ with open("corner-colours.ply", "w") as f:
     for q, c in F:
         f.writelines("%g %g %g %d %d %d\n" % (*P[i], *c) for i in q)
     f.writelines("4 %d %d %d %d\n" % tuple(range(4 * k, 4 * k + 4)) for k in range(6))
+# The same cube as an OBJ whose faces take their colours from materials (cube.mtl, Kd), as
+# SketchUp, Blender and CAD exports write them; two libraries on one mtllib line.
+NAMES = ["red", "green", "blue", "yellow", "cyan", "magenta"]
+with open("cube.obj", "w") as f:
+    f.write("mtllib cube.mtl more.mtl\n")
+    f.writelines("v %g %g %g\n" % p for p in P)
+    for (q, c), name in zip(F, NAMES):
+        f.write("usemtl %s\nf %d %d %d %d\n" % (name, *[i + 1 for i in q]))
+with open("cube.mtl", "w") as f:
+    for (q, c), name in list(zip(F, NAMES))[:3]:
+        f.write("newmtl %s\nKa 0 0 0\nKd %g %g %g\n" % (name, *[x / 255 for x in c]))
+with open("more.mtl", "w") as f:
+    for (q, c), name in list(zip(F, NAMES))[3:]:
+        f.write("newmtl %s\nKd %g %g %g\n" % (name, *[x / 255 for x in c]))

@@ -3,6 +3,7 @@
 #include "SurfaceColours.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -235,6 +236,38 @@ TEST(DataLoader, FaceColoursMoveOntoCorners)
   auto corners = art::LoadSurface(std::string(ART_SOURCE_DIR) + "/tests/data/colours/corner-colours.ply");
   EXPECT_EQ(art::WithColoursOnPoints(corners).Get(), corners.Get());
   EXPECT_EQ(art::PointColours(corners).size(), 24u);
+}
+
+// OBJ faces coloured by materials (usemtl, with Kd in the mtllib libraries) were drawn grey: the
+// diffuse colours become 8-bit cell colours when every face has one.
+TEST(DataLoader, ObjMaterialColours)
+{
+  auto cube = art::LoadSurface(std::string(ART_SOURCE_DIR) + "/tests/data/colours/cube.obj");
+  vtkDataArray* rgb = cube->GetCellData()->GetScalars();
+  ASSERT_NE(rgb, nullptr);
+  ASSERT_EQ(rgb->GetNumberOfTuples(), 6);
+  const double want[6][3] = { { 255, 0, 0 }, { 0, 255, 0 }, { 0, 0, 255 }, { 255, 255, 0 }, { 0, 255, 255 },
+    { 255, 0, 255 } };
+  for (int c = 0; c < 6; ++c)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(rgb->GetComponent(c, k), want[c][k]) << "face " << c;
+    }
+  }
+  // A line before the faces keeps the cell order (verts, lines, polys) of its colours.
+  const std::string dir = std::string(ART_TEST_OUTPUT) + "/";
+  std::ofstream(dir + "m.mtl") << "newmtl a\nKd 0 0 1\nnewmtl b\nKd 1 0.5 0\n";
+  std::ofstream(dir + "m.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nl 1 2\n";
+  auto pd = art::LoadSurface(dir + "m.obj");
+  ASSERT_NE(pd->GetCellData()->GetScalars(), nullptr);
+  EXPECT_EQ(pd->GetCellData()->GetScalars()->GetComponent(0, 1), 128); // the line: b
+  EXPECT_EQ(pd->GetCellData()->GetScalars()->GetComponent(1, 2), 255); // the face: a
+  // A face without a material, or a material without Kd, leaves the file without face colours.
+  std::ofstream(dir + "m.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nusemtl a\nf 1 3 2\n";
+  EXPECT_EQ(art::LoadSurface(dir + "m.obj")->GetCellData()->GetScalars(), nullptr);
+  std::ofstream(dir + "m.obj") << "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl c\nf 1 2 3\n";
+  EXPECT_EQ(art::LoadSurface(dir + "m.obj")->GetCellData()->GetScalars(), nullptr);
 }
 
 // 16-bit colours (LAS point clouds through PDAL) and floating colours in 0..255 were drawn white
