@@ -20,15 +20,17 @@ namespace art
 {
 struct Entry
 {
-  int face; ///< boundary face index
+  int face; ///< index into the finder's faces (the mesh's boundary faces unless given others)
   FaceCrossing x;
 };
 
 class ADAPTIVERTTETRAYCAST_EXPORT EntryFinder
 {
 public:
-  /// Buckets for `cam`'s pixels.
-  EntryFinder(const TetMesh& m, const Camera& cam);
+  /// Buckets for `cam`'s pixels. `faces` (tet, face), when given, replaces the mesh's boundary
+  /// faces: the faces of a region the rays enter (TetRayCaster's visible tets); every entry is
+  /// then asked for (Find's `all`). It must outlive the finder.
+  EntryFinder(const TetMesh& m, const Camera& cam, const std::vector<std::array<int, 2>>* faces = nullptr);
   /// Without a camera: every boundary face is tested for every ray (tests, single rays).
   explicit EntryFinder(const TetMesh& m);
 
@@ -42,10 +44,13 @@ private:
   bool Test(const TetWalker& w, const Ray& r, int b, Entry& e) const;
 
   const TetMesh& M;
+  const std::vector<std::array<int, 2>>& F; ///< the faces entered through
+  bool Region = false;                      ///< F is not the mesh's boundary (no adjacency)
   int W = 0, H = 0, BW = 0, BH = 0;
   bool Bucketed = false;
   std::vector<int> Start, Faces; ///< CSR: faces of bucket k are Faces[Start[k] .. Start[k+1])
   std::vector<int> Global;       ///< faces every ray must test (behind the eye, or no camera)
+  std::vector<std::array<float, 4>> Box; ///< each bucketed face's pixel box x0, x1, y0, y1, with slack
 };
 } // namespace art
 

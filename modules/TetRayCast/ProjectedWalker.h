@@ -99,9 +99,9 @@ public:
   /// As TetWalker::Walk, with the same crossings up to round-off.
   template <class Visit>
   void Walk(int t, int entryFace, FaceCrossing in, Visit&& visit, FaceCrossing& out,
-    std::uint64_t& steps, std::uint64_t& nudges) const
+    std::uint64_t& steps, std::uint64_t& nudges, const std::array<int, 4>* links = nullptr) const
   {
-    WalkFaces(M, *this, t, entryFace, in, visit, out, steps, nudges);
+    WalkFaces(M, *this, t, entryFace, in, visit, out, steps, nudges, links);
   }
 
   // The walk's geometry (see TetWalker).

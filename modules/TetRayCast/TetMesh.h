@@ -63,6 +63,8 @@ public:
   /// -1 on the boundary. The walker enters the neighbour knowing which of its faces it came through.
   int Link(std::size_t t, int f) const { return Links[t][f]; }
   const std::array<int, 4>& LinkRow(std::size_t t) const { return Links[t]; }
+  /// Every tet's row of links (the walk's default table).
+  const std::array<int, 4>* LinkRows() const { return Links.data(); }
   static int LinkTet(int link) { return link < 0 ? -1 : link >> 2; }
   static int LinkFace(int link) { return link & 3; }
   /// Outward plane of face f of tet t. Computed from the vertices when asked: the Pluecker walker

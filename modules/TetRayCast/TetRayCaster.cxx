@@ -15,6 +15,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #if defined(__GNUC__)
 #define ART_ALWAYS_INLINE __attribute__((always_inline))
@@ -31,9 +32,13 @@ struct TetRayCaster::Impl
   template <class Rule, class Walker>
   static void Trace(const TetRayCaster& rc, const Rule& rule, const TetWalker& w, const Walker& walker,
     const Ray& r, int start, const std::vector<Entry>& entries, RayResult& res, Counters& c,
-    std::uint64_t& nudges)
+    std::uint64_t& nudges, bool region = false, double from = -std::numeric_limits<double>::infinity())
   {
     const TetMesh& M = rc.M;
+    // Skipping empty space, the entries are the shown region's faces and the walk stops where
+    // the region does.
+    const auto& faces = region ? rc.Shown.faces : M.BoundaryFaces();
+    const std::array<int, 4>* links = region ? rc.Shown.links.data() : M.LinkRows();
     const RenderSettings& S = rc.S;
     const bool mip = S.mode == RenderSettings::Mode::MaxIntensity;
     const double dirLen = Length(r.dir);
@@ -49,7 +54,19 @@ struct TetRayCaster::Impl
     double fr[8];
     int fi[8];
     // Inlined into the walk by force: GCC otherwise calls it once per tet.
-    auto visit = [&](int t, const FaceCrossing& in, const FaceCrossing& whole) ART_ALWAYS_INLINE {
+    auto visit = [&](int t, const FaceCrossing& enter, const FaceCrossing& whole) ART_ALWAYS_INLINE {
+      // A ray traced from before its origin (`from`) adds nothing before it: the segment is cut
+      // there, as at the far end below.
+      FaceCrossing in = enter;
+      if (__builtin_expect(in.t < from, 0))
+      {
+        if (whole.t <= from)
+        {
+          return true;
+        }
+        in.s += (from - in.t) / (whole.t - in.t) * (whole.s - in.s);
+        in.t = from;
+      }
       // The ray ends inside this tet (at opaque geometry in front of the exit): the segment is
       // cut there, the scalar interpolated linearly along it, and the walk stops.
       const bool ends = whole.t > tmax;
@@ -123,6 +140,10 @@ struct TetRayCaster::Impl
       }
       return true;
     };
+    if (start >= 0 && region && !rc.Shown.shown[start])
+    {
+      start = -1; // the eye's tet shows nothing: the region's entries take over
+    }
     if (start >= 0)
     {
       // The ray starts inside tet `start` (a camera inside the mesh): from its origin to the face
@@ -130,12 +151,16 @@ struct TetRayCaster::Impl
       FaceCrossing in, ex;
       in.t = r.tmin;
       in.s = M.Evaluate(start, r.At(r.tmin));
+      // An origin on a face of its tet (an eye at round coordinates in a regular grid) leaves
+      // through that face at t ~ tmin, a few ulps either side: a crossing within the margin is
+      // the exit, at tmin, not a face behind the ray.
       int f = -1;
       for (int k = 0; k < 4 && f < 0; ++k)
       {
-        if (w.Crosses(start, k, +1, ex) && ex.t >= in.t)
+        if (w.Crosses(start, k, +1, ex) && ex.t >= in.t - tMargin)
         {
           f = k;
+          ex.t = std::max(ex.t, in.t);
         }
       }
       if (f >= 0)
@@ -143,10 +168,10 @@ struct TetRayCaster::Impl
         ++res.pieces;
         ++c.tetsCrossed;
         FaceCrossing out = ex;
-        const int link = M.Link(start, f);
+        const int link = links[start][f];
         if (visit(start, in, ex) && link >= 0)
         {
-          walker.Walk(TetMesh::LinkTet(link), TetMesh::LinkFace(link), ex, visit, out, c.tetsCrossed, nudges);
+          walker.Walk(TetMesh::LinkTet(link), TetMesh::LinkFace(link), ex, visit, out, c.tetsCrossed, nudges, links);
         }
         tDone = out.t;
       }
@@ -170,9 +195,9 @@ struct TetRayCaster::Impl
         continue;
       }
       ++res.pieces;
-      const auto& bf = M.BoundaryFaces()[e.face];
+      const auto& bf = faces[e.face];
       FaceCrossing out;
-      walker.Walk(bf[0], bf[1], e.x, visit, out, c.tetsCrossed, nudges);
+      walker.Walk(bf[0], bf[1], e.x, visit, out, c.tetsCrossed, nudges, links);
       tDone = out.t;
     }
     if (mip)
@@ -193,7 +218,7 @@ struct TetRayCaster::Impl
     int px, int py, std::vector<Entry>& out, int& hint, Counters& c)
   {
     const bool convex = rc.M.IsConvex();
-    if (convex || !rc.Boundary || !rc.S.boundaryGrid)
+    if (rc.Shown.on || convex || !rc.Boundary || !rc.S.boundaryGrid)
     {
       f.Find(w, r, px, py, !convex, out, hint, c);
       return;
@@ -226,7 +251,7 @@ struct TetRayCaster::Impl
   {
     const auto start = std::chrono::steady_clock::now();
     img = Image(cam.Width(), cam.Height());
-    const EntryFinder finder(rc.M, cam);
+    const EntryFinder finder(rc.M, cam, rc.Shown.on ? &rc.Shown.faces : nullptr);
     const bool parallel = cam.IsParallel();
     const int eyeTet = !parallel && rc.M.Bounds().Contains(cam.Position()) ? rc.M.Locate(cam.Position()) : -1;
     std::atomic<std::uint64_t> nudges{ 0 };
@@ -244,8 +269,7 @@ struct TetRayCaster::Impl
       [&](const Tile& tile, Counters& c) {
         std::vector<Entry> entries;
         std::uint64_t nd = 0;
-        int hint = -1, startHint = -1;
-        bool searched = false;
+        int hint = -1;
         for (int y = tile.y0; y < tile.y1; ++y)
         {
           // Scan lines in alternating directions: each ray starts next to the previous one.
@@ -265,14 +289,20 @@ struct TetRayCaster::Impl
               continue;
             }
             // A ray from inside the mesh starts in the tet holding its origin: the eye's for a
-            // perspective camera; a parallel camera's origins are walked to from the previous
-            // ray's tet (one exhaustive search per tile at most).
-            int start = eyeTet;
+            // perspective camera. A parallel camera's rays starting inside the box are traced
+            // from where their line enters it and integrated from their origins on: no walk has
+            // to find the tet holding each origin (in a non-convex mesh, that walk can leave
+            // through a hole and miss it).
+            const int start = eyeTet;
+            double from = -std::numeric_limits<double>::infinity();
             if (parallel && rc.M.Bounds().Contains(r.At(r.tmin)))
             {
-              start = rc.M.Locate(r.At(r.tmin), startHint, !searched);
-              searched = searched || startHint < 0;
-              startHint = start >= 0 ? start : startHint;
+              Ray line = r;
+              line.tmin = -std::numeric_limits<double>::infinity();
+              double l0, l1;
+              rc.M.Bounds().Clip(line, l0, l1);
+              from = r.tmin;
+              r.tmin = std::min(l0, r.tmin) - 1e-6 * (l1 - l0); // the box's faces a margin inside
             }
             const TetWalker w(rc.M, r);
             Entries(rc, finder, w, r, x, y, entries, hint, c);
@@ -284,11 +314,11 @@ struct TetRayCaster::Impl
             RayResult res;
             if (view && view->Fits(r))
             {
-              Trace(rc, rule, w, ProjectedWalker(*view, r), r, start, entries, res, c, nd);
+              Trace(rc, rule, w, ProjectedWalker(*view, r), r, start, entries, res, c, nd, rc.Shown.on, from);
             }
             else
             {
-              Trace(rc, rule, w, w, r, start, entries, res, c, nd);
+              Trace(rc, rule, w, w, r, start, entries, res, c, nd, rc.Shown.on, from);
             }
             img.Set(x, y, { float(res.rgba[0]), float(res.rgba[1]), float(res.rgba[2]), float(res.rgba[3]) });
           }
@@ -336,6 +366,83 @@ void TetRayCaster::SetSettings(RenderSettings settings)
     S.tf = TransferFunction::Preset("grey-ramp", lo, hi,
       TransferFunction::PresetUnitDistance(lo, hi, MeanSpacing(extent, double(M.NumberOfPoints()))));
   }
+  BuildRegion();
+}
+
+void TetRayCaster::BuildRegion()
+{
+  // A tet's scalars lie between its vertices' (linear inside), so a tet whose range the transfer
+  // function leaves transparent and no iso-value falls in adds nothing to any ray. Rebuilt only
+  // when the opacity nodes or the iso-values change (a mapper sets its settings every frame).
+  std::vector<double> key;
+  const bool want = S.skipEmpty && S.mode == RenderSettings::Mode::Composite;
+  if (want)
+  {
+    for (const auto& n : S.tf.Nodes())
+    {
+      key.push_back(n.s), key.push_back(n.tau);
+    }
+    key.push_back(1e300); // nodes end here
+    for (const auto& iso : S.isos)
+    {
+      key.push_back(iso.value);
+    }
+  }
+  if (want == Shown.on && key == Shown.key && (want || Shown.shown.empty()))
+  {
+    return;
+  }
+  Shown = Region();
+  Shown.key = key;
+  if (!want)
+  {
+    return;
+  }
+  const std::size_t n = M.NumberOfTets();
+  Shown.shown.assign(n, 0);
+  std::atomic<std::size_t> count{ 0 };
+  ForEachRange(static_cast<long long>(n), 4096, [&](long long b, long long e, Counters&) {
+    std::size_t local = 0;
+    for (long long t = b; t < e; ++t)
+    {
+      double lo = 1e300, hi = -1e300;
+      for (int v : M.Tet(t))
+      {
+        lo = std::min(lo, M.Scalars()[v]), hi = std::max(hi, M.Scalars()[v]);
+      }
+      bool show = !S.tf.Transparent(lo, hi);
+      for (std::size_t k = 0; k < S.isos.size() && !show; ++k)
+      {
+        show = S.isos[k].value >= lo && S.isos[k].value <= hi;
+      }
+      Shown.shown[t] = show;
+      local += show;
+    }
+    count += local;
+  }, nullptr);
+  if (count == n)
+  {
+    Shown.shown.clear(); // everything shows: the plain walk, with its coherent convex entries
+    return;
+  }
+  Shown.links.assign(M.LinkRows(), M.LinkRows() + n);
+  for (std::size_t t = 0; t < n; ++t)
+  {
+    if (!Shown.shown[t])
+    {
+      continue;
+    }
+    for (int f = 0; f < 4; ++f)
+    {
+      int& l = Shown.links[t][f];
+      if (l < 0 || !Shown.shown[TetMesh::LinkTet(l)])
+      {
+        l = -1;
+        Shown.faces.push_back({ static_cast<int>(t), f });
+      }
+    }
+  }
+  Shown.on = true;
 }
 
 RenderStats TetRayCaster::Render(const Camera& cam, Image& img, Progress* progress, const std::vector<double>* ends) const

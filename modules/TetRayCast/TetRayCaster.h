@@ -56,6 +56,11 @@ struct RenderSettings
   /// Walk the camera's rays in its projection (ProjectedWalker: 2-D side products) where it is
   /// valid, or always with the 3-D TetWalker (false).
   bool projectedWalk = true;
+  /// Empty-space skipping (composite mode): walk only the tets the transfer function or an
+  /// iso-surface can show anywhere between their vertex scalars. Rays enter that region through
+  /// its boundary faces (screen buckets, every entry) and leave it where it ends. The image is
+  /// the same up to round-off: the skipped tets add nothing.
+  bool skipEmpty = true;
 };
 
 struct RayResult
@@ -104,6 +109,17 @@ private:
   RenderSettings S;
   std::unique_ptr<const Accelerator> Boundary; ///< boundary triangles of a non-convex mesh
   Vec3 BoundaryOrigin;                          ///< where Boundary's coordinates are taken from
+  /// Empty-space skipping (RenderSettings::skipEmpty): which tets can show, the links with those
+  /// into the others cut, and the faces through which rays enter the shown region.
+  struct Region
+  {
+    bool on = false;
+    std::vector<char> shown;
+    std::vector<std::array<int, 4>> links;
+    std::vector<std::array<int, 2>> faces;
+    std::vector<double> key; ///< what it was built for: opacity nodes and iso values
+  } Shown;
+  void BuildRegion();
 };
 } // namespace art
 
