@@ -244,15 +244,18 @@ int Run(const cli::Options& o)
       const char* name;
       art::RenderSettings::Rule rule;
       double ert;
+      bool skip = true;
     };
     for (const Variant& v : { Variant{ "ours exact, ERT 0.99", art::RenderSettings::Rule::Exact, 0.99 },
            Variant{ "ours exact, no ERT", art::RenderSettings::Rule::Exact, 2.0 },
-           Variant{ "ours trapezoid, ERT 0.99", art::RenderSettings::Rule::Trapezoid, 0.99 } })
+           Variant{ "ours trapezoid, ERT 0.99", art::RenderSettings::Rule::Trapezoid, 0.99 },
+           Variant{ "ours exact, ERT 0.99, every tet", art::RenderSettings::Rule::Exact, 0.99, false } })
     {
       art::RenderSettings s;
       s.tf = tf;
       s.rule = v.rule;
       s.earlyTermination = v.ert;
+      s.skipEmpty = v.skip; // "every tet": without empty-space skipping
       const art::TetRayCaster caster(m, s);
       art::Image img;
       art::RenderStats st;
@@ -265,7 +268,7 @@ int Run(const cli::Options& o)
       r.tetsPerRay = st.counters.PerRay(st.counters.tetsCrossed);
       r.nsPerTet = st.counters.tetsCrossed ? r.seconds.median * 1e9 * art::GetThreadCount() / st.counters.tetsCrossed : 0;
       report(r);
-      if (v.ert < 1 && v.rule == art::RenderSettings::Rule::Exact)
+      if (v.ert < 1 && v.rule == art::RenderSettings::Rule::Exact && v.skip)
       {
         std::string file = me.name;
         std::replace(file.begin(), file.end(), ' ', '-');
