@@ -215,7 +215,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
       RelocationOptions ro;
       ro.Sweeps = Opt.RelocateSweeps;
       ro.QualityFloor = Opt.RelocateQualityFloor;
-      VertexRelocator::Relocate(moved, volume, y, ro);
+      VertexRelocator::Relocate(moved, volume, y, ro, importance.get());
       LeastSquaresFit refit(volume, Opt.Regularization, importance.get());
       std::vector<int> every(static_cast<size_t>(moved.NumberOfTets()));
       std::iota(every.begin(), every.end(), 0);

@@ -1,6 +1,7 @@
 #include "VertexRelocator.h"
 
 #include "Error.h"
+#include "OpacityImportance.h"
 #include "ParallelTiles.h"
 #include "VoxelRaster.h"
 
@@ -26,11 +27,13 @@ i128 Orient(const LatticePoint& a, const LatticePoint& b, const LatticePoint& c,
 class Relocator
 {
 public:
-  Relocator(BisectionMesh& mesh, const VoxelVolume& volume, std::vector<double>& x, const RelocationOptions& o)
+  Relocator(BisectionMesh& mesh, const VoxelVolume& volume, std::vector<double>& x, const RelocationOptions& o,
+    const OpacityImportance* imp)
     : Mesh(mesh)
     , Vol(volume)
     , X(x)
     , Opt(o)
+    , Imp(imp)
   {
     for (int d = 0; d < 3; ++d)
     {
@@ -62,8 +65,8 @@ public:
         throw Error("internal: a flat tetrahedron after relocation");
       }
       r.ForEachVoxel(Vol.Dims, [&](long long idx, const double* l) {
-        const double e = Vol.Value(idx) - (c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3]);
-        s += e * e;
+        const double f = Vol.Value(idx), u = c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3];
+        s += Imp ? Imp->Error2(idx, f, u) : (f - u) * (f - u);
       });
       per[t] = s;
     }
@@ -328,9 +331,11 @@ private:
         r.ForEachVoxel(Vol.Dims, [&](long long idx, const double* l) {
           const double res = values[idx] - (c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3]);
           const double phi = l[vi];
-          srr += res * res;
-          srp += res * phi;
-          spp += phi * phi;
+          // Weighted: the weight at the fit with v's current value (one reweighting step).
+          const double w = Imp ? Imp->Weight(idx, values[idx], values[idx] - res + X[v] * phi) : 1.0;
+          srr += w * res * res;
+          srp += w * res * phi;
+          spp += w * phi * phi;
           ++count;
         });
       });
@@ -349,6 +354,7 @@ private:
   const VoxelVolume& Vol;
   std::vector<double>& X;
   RelocationOptions Opt;
+  const OpacityImportance* Imp;
   int64_t Max[3];
   double Spacing[3];
   double Scale2 = 1;
@@ -356,14 +362,14 @@ private:
 } // namespace
 
 RelocationStats VertexRelocator::Relocate(BisectionMesh& mesh, const VoxelVolume& volume, std::vector<double>& x,
-  const RelocationOptions& options)
+  const RelocationOptions& options, const OpacityImportance* importance)
 {
   const int nv = mesh.NumberOfVertices();
   if (static_cast<int>(x.size()) != nv)
   {
     throw Error("internal: relocation needs one value per vertex");
   }
-  Relocator r(mesh, volume, x, options);
+  Relocator r(mesh, volume, x, options, importance);
   RelocationStats s;
   s.SseBefore = r.TotalSse();
   mesh.StopRefinement();

@@ -12,6 +12,8 @@
 
 namespace art
 {
+class OpacityImportance;
+
 struct RelocationOptions
 {
   int Sweeps = 3;            ///< Gauss-Seidel sweeps over the vertices
@@ -21,7 +23,7 @@ struct RelocationOptions
 struct RelocationStats
 {
   long long Visited = 0, Moved = 0; ///< vertex visits over all sweeps, and accepted moves
-  double SseBefore = 0, SseAfter = 0; ///< sum of squared errors over every voxel, before / after the sweeps
+  double SseBefore = 0, SseAfter = 0; ///< sum of squared errors over every voxel, before / after the sweeps (no refit)
   int Sweeps = 0;
 };
 
@@ -35,9 +37,12 @@ public:
   /// tet of the star flips or flattens (exact integer orientation on the lattice) and none gets
   /// worse than the quality floor. Box corners stay, vertices on a box edge or face move only
   /// within it, so the mesh stays a conforming tetrahedrisation of the box and the lattice
-  /// raster still gives each voxel centre to exactly one tet. Sequential: deterministic.
+  /// raster still gives each voxel centre to exactly one tet. Vertices with no tet in common are
+  /// relaxed in parallel (colour classes): the same result for any thread count. With an
+  /// `importance` (prepared), errors are OpacityImportance's weighted ones, each voxel weighed
+  /// at the fit with the moved vertex's current value. Sse* are then weighted too.
   static RelocationStats Relocate(BisectionMesh& mesh, const VoxelVolume& volume, std::vector<double>& x,
-    const RelocationOptions& options = {});
+    const RelocationOptions& options = {}, const OpacityImportance* importance = nullptr);
 };
 } // namespace art
 

@@ -209,3 +209,24 @@ TEST(VertexRelocator, ReducerOptionIsDeterministicValidAndLowersTheError)
     EXPECT_LT(one[i].Rms, 0.9 * plain[i].Rms) << plain[i].Rms << " -> " << one[i].Rms;
   }
 }
+
+TEST(VertexRelocator, WeightedByOpacityTheWeightedErrorFalls)
+{
+  // A ball whose surface is what the opacity ramp (400..600) shows.
+  const int d[3] = { 30, 28, 26 };
+  const double spacing[3] = { 1, 1, 1 }, origin[3] = { 0, 0, 0 };
+  const art::VoxelVolume vol = art::VolumeFromImage(fixtures::Field(d, spacing, origin, [](double x, double y, double z) {
+    const double dx = x - 14.3, dy = y - 13.6, dz = z - 12.2;
+    return dx * dx + dy * dy + dz * dz < 9.3 * 9.3 ? 1000.0 : 0.0;
+  }));
+  art::ReducerOptions opt;
+  opt.TargetTets = 1000;
+  opt.ScalarOpacity = { { 0, 0 }, { 400, 0 }, { 600, 0.8 }, { 1000, 0.8 } };
+  const auto plain = art::TetReducer(opt).Run(vol).back();
+  opt.RelocateVertices = true;
+  const auto moved = art::TetReducer(opt).Run(vol).back();
+  fixtures::ExpectValid(moved);
+  ASSERT_TRUE(moved.Weighted);
+  EXPECT_EQ(moved.NumberOfTets(), plain.NumberOfTets());
+  EXPECT_LT(moved.WeightedRms, 0.9 * plain.WeightedRms) << plain.WeightedRms << " -> " << moved.WeightedRms;
+}
