@@ -53,17 +53,24 @@ EntryFinder::EntryFinder(const TetMesh& m, const Camera& cam, const std::vector<
       continue; // back-facing: no ray from this camera enters through it
     }
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    bool behind = false;
+    Vec3 q[3];
+    double z[3];
+    int near = 0, back = 0;
     for (int k = 0; k < 3; ++k)
     {
-      const Vec3 q = M.PointsArray()[v[fv[k]]] - eye;
-      const double z = par ? 1.0 : Dot(q, fwd);
-      if (z <= nearZ)
-      {
-        behind = true;
-        break;
-      }
-      const double xn = Dot(q, RW) / (rr * z), yn = Dot(q, UH) / (uu * z);
+      q[k] = M.PointsArray()[v[fv[k]]] - eye;
+      z[k] = par ? 1.0 : Dot(q[k], fwd);
+      near += z[k] <= nearZ;
+      back += z[k] < 0;
+    }
+    if (back == 3)
+    {
+      continue; // behind the eye's plane: the camera's rays (forward, from the eye) never get there
+    }
+    const bool behind = near > 0; // across the eye's plane: no screen box, every ray tests it
+    for (int k = 0; k < 3 && !behind; ++k)
+    {
+      const double xn = Dot(q[k], RW) / (rr * z[k]), yn = Dot(q[k], UH) / (uu * z[k]);
       const double px = (xn + 1) * 0.5 * W - 0.5, py = (1 - yn) * 0.5 * H - 0.5;
       x0 = std::min(x0, px), x1 = std::max(x1, px), y0 = std::min(y0, py), y1 = std::max(y1, py);
     }

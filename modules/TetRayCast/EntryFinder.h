@@ -40,6 +40,9 @@ public:
   void Find(const TetWalker& w, const Ray& r, int px, int py, bool all, std::vector<Entry>& out,
     int& hint, Counters& c) const;
 
+  /// Faces every ray tests (across the eye's plane, or all without a camera).
+  std::size_t GlobalCount() const { return Global.size(); }
+
 private:
   bool Test(const TetWalker& w, const Ray& r, int b, Entry& e) const;
 

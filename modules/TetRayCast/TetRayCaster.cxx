@@ -215,10 +215,10 @@ struct TetRayCaster::Impl
   }
 
   static void Entries(const TetRayCaster& rc, const EntryFinder& f, const TetWalker& w, const Ray& r,
-    int px, int py, std::vector<Entry>& out, int& hint, Counters& c)
+    int px, int py, std::vector<Entry>& out, int& hint, Counters& c, bool region = false)
   {
     const bool convex = rc.M.IsConvex();
-    if (rc.Shown.on || convex || !rc.Boundary || !rc.S.boundaryGrid)
+    if (region || convex || !rc.Boundary || !rc.S.boundaryGrid)
     {
       f.Find(w, r, px, py, !convex, out, hint, c);
       return;
@@ -251,7 +251,15 @@ struct TetRayCaster::Impl
   {
     const auto start = std::chrono::steady_clock::now();
     img = Image(cam.Width(), cam.Height());
-    const EntryFinder finder(rc.M, cam, rc.Shown.on ? &rc.Shown.faces : nullptr);
+    bool region = rc.Shown.on;
+    auto finder = std::make_unique<const EntryFinder>(rc.M, cam, region ? &rc.Shown.faces : nullptr);
+    if (region && finder->GlobalCount() > 256)
+    {
+      // An eye inside the shown region's surface leaves the faces across its plane to every
+      // ray: past a few hundred, walking every tet costs less.
+      region = false;
+      finder = std::make_unique<const EntryFinder>(rc.M, cam);
+    }
     const bool parallel = cam.IsParallel();
     const int eyeTet = !parallel && rc.M.Bounds().Contains(cam.Position()) ? rc.M.Locate(cam.Position()) : -1;
     std::atomic<std::uint64_t> nudges{ 0 };
@@ -305,7 +313,7 @@ struct TetRayCaster::Impl
               r.tmin = std::min(l0, r.tmin) - 1e-6 * (l1 - l0); // the box's faces a margin inside
             }
             const TetWalker w(rc.M, r);
-            Entries(rc, finder, w, r, x, y, entries, hint, c);
+            Entries(rc, *finder, w, r, x, y, entries, hint, c, region);
             if (entries.empty() && start < 0)
             {
               continue;
@@ -314,11 +322,11 @@ struct TetRayCaster::Impl
             RayResult res;
             if (view && view->Fits(r))
             {
-              Trace(rc, rule, w, ProjectedWalker(*view, r), r, start, entries, res, c, nd, rc.Shown.on, from);
+              Trace(rc, rule, w, ProjectedWalker(*view, r), r, start, entries, res, c, nd, region, from);
             }
             else
             {
-              Trace(rc, rule, w, w, r, start, entries, res, c, nd, rc.Shown.on, from);
+              Trace(rc, rule, w, w, r, start, entries, res, c, nd, region, from);
             }
             img.Set(x, y, { float(res.rgba[0]), float(res.rgba[1]), float(res.rgba[2]), float(res.rgba[3]) });
           }
