@@ -241,6 +241,17 @@ int Run(const cli::Options& o, const std::string& input)
     settings = MakeSettings(o, MakeTF(o, grid, range[0], range[1]));
   }
   buildSeconds = Seconds(t0);
+  if (settings.isos.empty() && settings.tf.Transparent(range[0], range[1]))
+  {
+    // A transfer function made for other data (another modality or units) draws nothing: say so
+    // rather than write a blank image without a word.
+    const auto& n = settings.tf.Nodes();
+    std::ostringstream ss;
+    ss << (note.empty() ? "" : "; ") << "the transfer function is transparent over the data's range " << range[0]
+       << " .. " << range[1] << " (its control points span " << n.front().s << " .. " << n.back().s
+       << "): the image shows nothing";
+    note += ss.str();
+  }
 
   art::Box3 bounds;
   if (volume)
@@ -311,6 +322,10 @@ int Run(const cli::Options& o, const std::string& input)
   if (json)
   {
     j.Set("output", view.output).Set("width", view.width).Set("height", view.height);
+    if (!note.empty())
+    {
+      j.Set("note", note);
+    }
     j.Set("mesh", o.Flag("reference") ? std::string("voxel reference") : meshLabel);
     j.Set("tets", static_cast<long long>(mesh.NumberOfTets()))
       .Set("vertices", static_cast<long long>(mesh.NumberOfPoints()));
