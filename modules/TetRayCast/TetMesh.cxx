@@ -546,6 +546,49 @@ namespace
 // points). Without shared faces each tet would be a piece of its own, found through the boundary
 // grid at every step; points that differ in the scalar (a field discontinuous across a face) stay
 // apart. Returns how many points went.
+// Points no tet uses (left over by a clip or threshold filter, or stray) are dropped, in order:
+// they would widen the bounds a camera frames, and a NaN among them would refuse the mesh.
+// Returns how many went; ids out of range are left for the constructor to name.
+std::size_t DropUnusedPoints(std::vector<Vec3>& pts, std::vector<double>& val, std::vector<std::array<int, 4>>& tets)
+{
+  const std::size_t np = pts.size();
+  std::vector<int> index(np, -1);
+  for (const auto& t : tets)
+  {
+    for (int v : t)
+    {
+      if (v < 0 || static_cast<std::size_t>(v) >= np)
+      {
+        return 0;
+      }
+      index[v] = 0;
+    }
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < np; ++i)
+  {
+    if (index[i] == 0)
+    {
+      index[i] = static_cast<int>(kept);
+      pts[kept] = pts[i], val[kept] = val[i];
+      ++kept;
+    }
+  }
+  if (kept == np)
+  {
+    return 0;
+  }
+  pts.resize(kept), val.resize(kept);
+  for (auto& t : tets)
+  {
+    for (int& v : t)
+    {
+      v = index[v];
+    }
+  }
+  return np - kept;
+}
+
 std::size_t MergeDuplicatePoints(std::vector<Vec3>& pts, std::vector<double>& val, std::vector<std::array<int, 4>>& tets)
 {
   const std::size_t np = pts.size();
@@ -697,6 +740,11 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     ug->GetCellPoints(c, n, ids);
     tets.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]),
       static_cast<int>(ids[3]) });
+  }
+  const std::size_t unused = DropUnusedPoints(pts, val, tets);
+  if (unused > 0 && note)
+  {
+    *note += std::string(note->empty() ? "" : "; ") + std::to_string(unused) + " points no tet uses were dropped";
   }
   const std::size_t merged = MergeDuplicatePoints(pts, val, tets);
   if (merged > 0 && note)

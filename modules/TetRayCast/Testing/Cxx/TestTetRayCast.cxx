@@ -476,6 +476,51 @@ TEST(TetMesh, DuplicatePointsAreMerged)
   EXPECT_EQ(apart.BoundaryFaces().size(), 4 * apart.NumberOfTets());
 }
 
+// Points no tet uses (a clip's leftovers, stray points far away, a NaN among them) are dropped:
+// the bounds, and so the framing, are the tets', and the mesh is not refused.
+TEST(TetMesh, UnusedPointsAreDropped)
+{
+  const TetMesh tets = fixtures::GridMesh(2, 2, 2, { 0, 0, 0 }, { 1, 1, 1 }, Linear, 5);
+  vtkNew<vtkUnstructuredGrid> ug;
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkDoubleArray> f;
+  f->SetName("f");
+  auto stray = [&](double x, double v) {
+    pts->InsertNextPoint(x, x, x);
+    f->InsertNextValue(v);
+  };
+  stray(1000, 1);
+  for (std::size_t i = 0; i < tets.NumberOfPoints(); ++i)
+  {
+    const Vec3& p = tets.PointsArray()[i];
+    pts->InsertNextPoint(p.x, p.y, p.z);
+    f->InsertNextValue(tets.Scalars()[i]);
+    if (i == 5)
+    {
+      stray(std::nan(""), std::nan(""));
+    }
+  }
+  stray(-1e9, 0);
+  auto id = [](std::size_t i) { return static_cast<vtkIdType>(1 + i + (i > 5 ? 1 : 0)); };
+  for (std::size_t t = 0; t < tets.NumberOfTets(); ++t)
+  {
+    vtkIdType ids[4];
+    for (int k = 0; k < 4; ++k)
+      ids[k] = id(tets.Tet(t)[k]);
+    ug->InsertNextCell(VTK_TETRA, 4, ids);
+  }
+  ug->SetPoints(pts);
+  ug->GetPointData()->SetScalars(f);
+  std::string note;
+  const TetMesh m = TetMesh::FromVTK(ug, {}, &note);
+  EXPECT_NE(note.find("3 points no tet uses were dropped"), std::string::npos) << note;
+  EXPECT_EQ(m.NumberOfPoints(), tets.NumberOfPoints());
+  EXPECT_EQ(m.Bounds().lo.x, 0.0);
+  EXPECT_EQ(m.Bounds().hi.x, 2.0);
+  for (std::size_t i = 0; i < m.NumberOfPoints(); ++i)
+    EXPECT_EQ(m.Scalars()[i], tets.Scalars()[i]) << i; // in order
+}
+
 // A volume whose direction matrix turns it 90 degrees about z renders exactly like the same voxels
 // stored already turned (axes swapped, one reversed) with the identity direction: through the
 // full-resolution tets and through the voxel reference alike.
