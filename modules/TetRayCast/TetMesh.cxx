@@ -9,6 +9,8 @@
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkCellData.h>
+#include <vtkCellTypes.h>
+#include <vtkGenericCell.h>
 #include <vtkCellDataToPointData.h>
 #include <vtkDataSetTriangleFilter.h>
 #include <vtkImageData.h>
@@ -649,10 +651,37 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
   {
     throw Error("mesh has no cells", file);
   }
+  // A surface or a line set saved as a grid has nothing to cast through: say what it holds.
+  // Cells of lower dimension beside 3-D ones are left out, with a note.
+  vtkIdType lower = 0;
+  {
+    vtkNew<vtkCellTypes> types;
+    grid->GetCellTypes(types);
+    bool anyLower = false;
+    bool low[256] = {};
+    vtkNew<vtkGenericCell> cell;
+    for (vtkIdType k = 0; k < types->GetNumberOfTypes(); ++k)
+    {
+      const unsigned char type = types->GetCellType(k);
+      cell->SetCellType(type);
+      low[type] = cell->GetCellDimension() < 3;
+      anyLower = anyLower || low[type];
+    }
+    for (vtkIdType c = 0; anyLower && c < grid->GetNumberOfCells(); ++c)
+    {
+      lower += low[grid->GetCellType(c)] ? 1 : 0;
+    }
+  }
+  if (lower == grid->GetNumberOfCells())
+  {
+    throw Error("holds no 3-D cells (its " + std::to_string(lower) +
+        " cells are surface, line or vertex cells): a tet mesh is needed; a surface renders from .vtp, .ply, .obj or .stl",
+      file);
+  }
   // The scalars are chosen, and cell scalars averaged to the points, on the cells as given: after
   // tetrahedralising, a cell's weight at a corner would depend on how many tets it became.
   vtkSmartPointer<vtkUnstructuredGrid> ug = grid;
-  std::string notes;
+  std::string notes = lower > 0 ? std::to_string(lower) + " cells that are not 3-D were left out" : "";
   vtkDataArray* s = ChooseArray(ug->GetPointData(), array);
   if (!s)
   {
@@ -681,7 +710,7 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     const std::string name = cs->GetName();
     ug = vtkUnstructuredGrid::SafeDownCast(toPoints->GetOutput());
     s = ug->GetPointData()->GetArray(name.c_str());
-    notes = "cell scalars '" + name + "' were averaged to the points";
+    notes += (notes.empty() ? "" : "; ") + ("cell scalars '" + name + "' were averaged to the points");
   }
   if (s->GetNumberOfComponents() != 1)
   {

@@ -476,6 +476,37 @@ TEST(TetMesh, DuplicatePointsAreMerged)
   EXPECT_EQ(apart.BoundaryFaces().size(), 4 * apart.NumberOfTets());
 }
 
+// A surface saved as a grid is named as such; surface cells beside tets are left out with a note.
+TEST(TetMesh, SurfaceCellsAreNamed)
+{
+  vtkNew<vtkUnstructuredGrid> ug;
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkDoubleArray> f;
+  for (int i = 0; i < 5; ++i)
+  {
+    pts->InsertNextPoint(i == 1, i == 2, i == 3 ? 1 : (i == 4 ? -1 : 0));
+    f->InsertNextValue(i);
+  }
+  ug->SetPoints(pts);
+  ug->GetPointData()->SetScalars(f);
+  vtkIdType tri[3] = { 0, 1, 2 }, tet[4] = { 0, 1, 2, 3 };
+  ug->InsertNextCell(VTK_TRIANGLE, 3, tri);
+  try
+  {
+    TetMesh::FromVTK(ug, {}, nullptr, "surface.vtu");
+    ADD_FAILURE() << "a triangle-only grid was accepted";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("holds no 3-D cells (its 1 cells are surface"), std::string::npos) << e.what();
+  }
+  ug->InsertNextCell(VTK_TETRA, 4, tet);
+  std::string note;
+  const TetMesh m = TetMesh::FromVTK(ug, {}, &note);
+  EXPECT_EQ(m.NumberOfTets(), 1u);
+  EXPECT_NE(note.find("1 cells that are not 3-D were left out"), std::string::npos) << note;
+}
+
 // Points no tet uses (a clip's leftovers, stray points far away, a NaN among them) are dropped:
 // the bounds, and so the framing, are the tets', and the mesh is not refused.
 TEST(TetMesh, UnusedPointsAreDropped)
