@@ -396,12 +396,13 @@ void TetRayCaster::BuildRegion()
       key.push_back(iso.value);
     }
   }
-  if (want == Shown.on && key == Shown.key && (want || Shown.shown.empty()))
+  if (Shown.built && key == Shown.key) // an empty key: skipping off
   {
     return;
   }
   Shown = Region();
   Shown.key = key;
+  Shown.built = true;
   if (!want)
   {
     return;

@@ -118,6 +118,7 @@ private:
     std::vector<std::array<int, 4>> links;
     std::vector<std::array<int, 2>> faces;
     std::vector<double> key; ///< what it was built for: opacity nodes and iso values
+    bool built = false;
   } Shown;
   void BuildRegion();
 };
