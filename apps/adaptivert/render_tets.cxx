@@ -66,6 +66,9 @@ void Declare(cli::Options& o)
     "how a volume is reduced: bisection (newest-vertex, near-regular tets) or edge (split the edges that remove the "
     "most error: thin tets along sharp surfaces, sharper images per tet, slower)",
     "bisection");
+  o.Add("relocate", 0, "",
+    "after reducing, move the vertices off the bisection lattice toward the surfaces they fit (17-37% lower RMS "
+    "on the CT, sharper images; about 100x slower to reduce)");
   o.Add("plain-reduction", 0, "",
     "reduce in plain L2, not weighted by the transfer function's opacity (a few times faster on large volumes)");
   o.Add("reference", 0, "", "render the full-resolution voxel reference instead");
@@ -196,6 +199,7 @@ int Run(const cli::Options& o, const std::string& input)
             ro.ScalarOpacity.emplace_back(n.s, n.alpha);
           }
         }
+        ro.RelocateVertices = o.Flag("relocate");
         // Maximum intensity shows the fit's overshoot at sharp edges as bright facets.
         ro.ClampToVoxels = settings.mode == art::RenderSettings::Mode::MaxIntensity;
         const art::VoxelVolume vv = art::VolumeFromImage(volume, input);
@@ -208,6 +212,7 @@ int Run(const cli::Options& o, const std::string& input)
         mesh = cli::ToTetMesh(r);
         std::ostringstream ss;
         ss << "adaptive tets (" << (r.Weighted ? "opacity-weighted " : "") << "least-squares reduction"
+           << (ro.RelocateVertices ? ", vertices relocated" : "")
            << (ro.ClampToVoxels ? " clamped to the voxel range" : "") << ", RMS error "
            << r.Rms << ", max " << r.Max;
         if (r.Weighted)
