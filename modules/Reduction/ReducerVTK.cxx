@@ -17,6 +17,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <cmath>
 #include <vector>
 
 namespace art
@@ -54,6 +55,25 @@ VoxelVolume VolumeFromImage(vtkImageData* image, const std::string& file)
   if (image->GetNumberOfPoints() == 0 || v.Dims[0] <= 0 || v.Dims[1] <= 0 || v.Dims[2] <= 0)
   {
     throw Error("the image is empty", file);
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    // A zero spacing gave tets of zero volume without a word; a negative one (kept by VTK's
+    // readers) is a flipped axis: its sign moves into the direction, every voxel staying put.
+    if (v.Dims[a] > 1 && (!std::isfinite(v.Spacing[a]) || v.Spacing[a] == 0.0))
+    {
+      throw Error("the spacing along axis " + std::to_string(a) + " is " + std::to_string(v.Spacing[a]) +
+          "; voxels need a positive, finite spacing",
+        file);
+    }
+    if (v.Spacing[a] < 0)
+    {
+      v.Spacing[a] = -v.Spacing[a];
+      for (int r = 0; r < 3; ++r)
+      {
+        v.Direction[3 * r + a] = -v.Direction[3 * r + a];
+      }
+    }
   }
   vtkDataArray* s = image->GetPointData()->GetScalars();
   if (!s)

@@ -309,6 +309,25 @@ TEST(TetReducer, BadInputIsAClearError)
   }
   auto empty = vtkSmartPointer<vtkImageData>::New();
   EXPECT_THROW(art::VolumeFromImage(empty), art::Error);
+  // A zero spacing is an error naming the axis (it gave zero-volume tets); a negative one is a
+  // flipped axis, reduced like the same voxels stored the other way round.
+  auto zero = Field(d, s, o, [](double x, double, double) { return x; });
+  zero->SetSpacing(1, 0, 1);
+  try
+  {
+    art::VolumeFromImage(zero);
+    FAIL() << "accepted a zero spacing";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("spacing along axis 1 is 0"), std::string::npos) << e.what();
+  }
+  auto flipped = Field(d, s, o, [](double x, double, double) { return x; });
+  flipped->SetSpacing(-s[0], s[1], s[2]);
+  const auto fv = art::VolumeFromImage(flipped);
+  EXPECT_EQ(fv.Spacing[0], s[0]);
+  EXPECT_EQ(fv.Direction[0], -1.0);
+  EXPECT_EQ(fv.Origin[0], o[0]);
   art::ReducerOptions none;
   auto ok = art::VolumeFromImage(Field(d, s, o, [](double x, double, double) { return x; }));
   EXPECT_THROW(art::TetReducer(none).Run(ok), art::Error);
