@@ -43,7 +43,8 @@ public:
   static void CheckFullResolutionFits(long long tets, double machineBytes, const std::string& file);
 
   /// Any vtkUnstructuredGrid with point scalars (the active ones, or `array` by name). Cells
-  /// other than tets are tetrahedralised first (vtkDataSetTriangleFilter); `note` says so.
+  /// other than tets are tetrahedralised first (vtkDataSetTriangleFilter), cells of lower
+  /// dimension left out, points no tet uses dropped and duplicate points merged; `note` says so.
   static TetMesh FromVTK(vtkUnstructuredGrid* grid, const std::string& array = {},
     std::string* note = nullptr, const std::string& file = {});
 
