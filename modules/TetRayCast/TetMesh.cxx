@@ -408,7 +408,7 @@ void TetMesh::Barycentric(std::size_t t, const Vec3& p, double w[4]) const
   w[0] = 1.0 - w[1] - w[2] - w[3];
 }
 
-int TetMesh::Locate(const Vec3& p, int hint, bool exhaustive) const
+int TetMesh::Locate(const Vec3& p) const
 {
   const double tol = -1e-12;
   auto inside = [&](std::size_t t, int* beyond) {
@@ -425,7 +425,7 @@ int TetMesh::Locate(const Vec3& p, int hint, bool exhaustive) const
   {
     return -1;
   }
-  int t = hint >= 0 && static_cast<std::size_t>(hint) < Tets.size() ? hint : 0;
+  int t = 0;
   for (int step = 0; step < 100000; ++step)
   {
     int k;
@@ -440,7 +440,7 @@ int TetMesh::Locate(const Vec3& p, int hint, bool exhaustive) const
     }
     t = next;
   }
-  for (std::size_t u = 0; exhaustive && u < Tets.size(); ++u)
+  for (std::size_t u = 0; u < Tets.size(); ++u)
   {
     if (inside(u, nullptr))
     {
@@ -544,17 +544,40 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
 
 namespace
 {
-// Points equal in position and scalar become one (exported meshes often give every cell its own
-// points). Without shared faces each tet would be a piece of its own, found through the boundary
-// grid at every step; points that differ in the scalar (a field discontinuous across a face) stay
-// apart. Returns how many points went.
+// Keeps the points with to[i] == i, in input order, and renumbers each tet's ids i through to[i]
+// (a kept point); ids out of range stay, for the constructor to name.
+void KeepPoints(std::vector<Vec3>& pts, std::vector<double>& val, std::vector<std::array<int, 4>>& tets,
+  const std::vector<int>& to)
+{
+  const std::size_t np = pts.size();
+  std::vector<int> index(np, -1);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < np; ++i)
+  {
+    if (to[i] == static_cast<int>(i))
+    {
+      index[i] = static_cast<int>(kept);
+      pts[kept] = pts[i], val[kept] = val[i];
+      ++kept;
+    }
+  }
+  pts.resize(kept), val.resize(kept);
+  for (auto& t : tets)
+  {
+    for (int& id : t)
+    {
+      id = id >= 0 && id < static_cast<int>(np) ? index[to[id]] : id;
+    }
+  }
+}
+
 // Points no tet uses (left over by a clip or threshold filter, or stray) are dropped, in order:
 // they would widen the bounds a camera frames, and a NaN among them would refuse the mesh.
 // Returns how many went; ids out of range are left for the constructor to name.
 std::size_t DropUnusedPoints(std::vector<Vec3>& pts, std::vector<double>& val, std::vector<std::array<int, 4>>& tets)
 {
   const std::size_t np = pts.size();
-  std::vector<int> index(np, -1);
+  std::vector<int> to(np, -1);
   for (const auto& t : tets)
   {
     for (int v : t)
@@ -563,34 +586,21 @@ std::size_t DropUnusedPoints(std::vector<Vec3>& pts, std::vector<double>& val, s
       {
         return 0;
       }
-      index[v] = 0;
+      to[v] = v;
     }
   }
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < np; ++i)
+  const std::size_t dropped = static_cast<std::size_t>(std::count(to.begin(), to.end(), -1));
+  if (dropped > 0)
   {
-    if (index[i] == 0)
-    {
-      index[i] = static_cast<int>(kept);
-      pts[kept] = pts[i], val[kept] = val[i];
-      ++kept;
-    }
+    KeepPoints(pts, val, tets, to);
   }
-  if (kept == np)
-  {
-    return 0;
-  }
-  pts.resize(kept), val.resize(kept);
-  for (auto& t : tets)
-  {
-    for (int& v : t)
-    {
-      v = index[v];
-    }
-  }
-  return np - kept;
+  return dropped;
 }
 
+// Points equal in position and scalar become one (exported meshes often give every cell its own
+// points). Without shared faces each tet would be a piece of its own, found through the boundary
+// grid at every step; points that differ in the scalar (a field discontinuous across a face) stay
+// apart. Returns how many points went.
 std::size_t MergeDuplicatePoints(std::vector<Vec3>& pts, std::vector<double>& val, std::vector<std::array<int, 4>>& tets)
 {
   const std::size_t np = pts.size();
@@ -617,30 +627,7 @@ std::size_t MergeDuplicatePoints(std::vector<Vec3>& pts, std::vector<double>& va
   {
     return 0;
   }
-  // Keep the first of each group, in input order.
-  std::vector<int> index(np, -1);
-  std::vector<Vec3> p2;
-  std::vector<double> v2;
-  p2.reserve(np - merged);
-  v2.reserve(np - merged);
-  for (std::size_t i = 0; i < np; ++i)
-  {
-    if (to[i] == static_cast<int>(i))
-    {
-      index[i] = static_cast<int>(p2.size());
-      p2.push_back(pts[i]);
-      v2.push_back(val[i]);
-    }
-  }
-  for (auto& t : tets)
-  {
-    for (int& id : t)
-    {
-      id = id >= 0 && id < static_cast<int>(np) ? index[to[id]] : id; // bad ids stay for the check
-    }
-  }
-  pts = std::move(p2);
-  val = std::move(v2);
+  KeepPoints(pts, val, tets, to); // the first of each group
   return merged;
 }
 } // namespace
