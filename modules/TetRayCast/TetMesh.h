@@ -78,9 +78,9 @@ public:
   const Vec3& VertexGradient(int v) const { return Gradients[v]; }
   /// Barycentric weights of p in tet t (by sub-volumes; equal weights for a flat tet).
   void Barycentric(std::size_t t, const Vec3& p, double w[4]) const;
-  /// The tet holding p, or -1: a walk across the face p lies beyond, from `hint` (any tet when
-  /// out of range), then, if `exhaustive`, every tet when the walk leaves the mesh or circles.
-  int Locate(const Vec3& p, int hint = -1, bool exhaustive = true) const;
+  /// The tet holding p, or -1: a walk across the face p lies beyond, then every tet when the walk
+  /// leaves the mesh or circles.
+  int Locate(const Vec3& p) const;
   double Evaluate(std::size_t t, const Vec3& p) const
   {
     const auto& c = Interp[t];
