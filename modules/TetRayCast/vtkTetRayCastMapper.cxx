@@ -301,7 +301,6 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // render window's abort check (an interactor's pending event) can also stop the frame.
   const std::thread::id caller = std::this_thread::get_id();
   vtkRenderWindow* win = ren->GetRenderWindow();
-  art::Progress* self = nullptr;
   double reported = -1.0;
   art::Progress progress([&](double f, const std::string&) {
     if (std::this_thread::get_id() != caller)
@@ -312,10 +311,9 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->InvokeEvent(vtkCommand::VolumeMapperRenderProgressEvent, &f);
     if (win && win->CheckAbortStatus())
     {
-      self->Cancel();
+      progress.Cancel(); // called only once the render has started, with progress built
     }
   });
-  self = &progress;
   this->InvokeEvent(vtkCommand::VolumeMapperRenderStartEvent);
   const art::RenderStats st = this->Impl->Caster->Render(cam, img, &progress, ends.empty() ? nullptr : &ends);
   if (progress.Cancelled())
