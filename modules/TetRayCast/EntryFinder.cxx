@@ -8,6 +8,7 @@ namespace art
 namespace
 {
 constexpr int B = 8; // bucket size in pixels
+constexpr double Slack = 0.01; // pixels
 }
 
 EntryFinder::EntryFinder(const TetMesh& m)
@@ -79,15 +80,21 @@ EntryFinder::EntryFinder(const TetMesh& m, const Camera& cam, const std::vector<
       global[b] = 1;
       continue;
     }
-    // One pixel of slack: rays go through pixel centres and the test itself is exact.
-    const int bx0 = static_cast<int>(std::floor((x0 - 1) / B)), bx1 = static_cast<int>(std::floor((x1 + 1) / B));
-    const int by0 = static_cast<int>(std::floor((y0 - 1) / B)), by1 = static_cast<int>(std::floor((y1 + 1) / B));
+    // Rays go through pixel centres and the test itself is exact, so the box needs slack only
+    // for the projection's rounding against Camera::Generate's (far below Slack).
+    x0 -= Slack, x1 += Slack, y0 -= Slack, y1 += Slack;
+    const int bx0 = static_cast<int>(std::floor(x0 / B)), bx1 = static_cast<int>(std::floor(x1 / B));
+    const int by0 = static_cast<int>(std::floor(y0 / B)), by1 = static_cast<int>(std::floor(y1 / B));
     if (bx1 < 0 || by1 < 0 || bx0 >= BW || by0 >= BH)
     {
       continue;
     }
     rect[b] = { std::max(bx0, 0), std::min(bx1, BW - 1), std::max(by0, 0), std::min(by1, BH - 1) };
-    Box[b] = { float(x0 - 1), float(x1 + 1), float(y0 - 1), float(y1 + 1) };
+    // Rounded outward: a face projected far off screen (near the eye's plane) has coordinates
+    // beyond float's integer precision.
+    auto down = [](double x) { const float f = static_cast<float>(x); return f > x ? std::nextafter(f, -HUGE_VALF) : f; };
+    auto up = [](double x) { const float f = static_cast<float>(x); return f < x ? std::nextafter(f, HUGE_VALF) : f; };
+    Box[b] = { down(x0), up(x1), down(y0), up(y1) };
   }
   Start.assign(static_cast<std::size_t>(BW) * BH + 1, 0);
   for (const auto& r : rect)
