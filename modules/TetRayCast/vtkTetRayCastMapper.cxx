@@ -1,5 +1,6 @@
 #include "vtkTetRayCastMapper.h"
 
+#include "ArrayChoice.h"
 #include "Camera.h"
 #include "Error.h"
 #include "Progress.h"
@@ -28,6 +29,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <thread>
@@ -137,6 +139,70 @@ double QuadDepth(vtkRenderer* ren, const double b[6], vtkMatrix4x4* toWorld)
   }
   return std::min(std::max(minZ, 0.0), 1.0);
 }
+// The grid as the engine should see it under the mapper's ScalarMode: sharing grid's points and
+// cells, with only the array the mode selects (TetMesh::FromVTK takes the point scalars, else
+// averages the cell scalars to the points). VTK_SCALAR_MODE_DEFAULT passes grid as it is. `key`
+// names the choice (a change rebuilds the mesh); nullptr, with `error` set, when there is none.
+vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(
+  vtkUnstructuredGrid* grid, int mode, const char* name, int id, std::string& key, std::string& error)
+{
+  vtkDataArray* a = nullptr;
+  bool onCells = false;
+  switch (mode)
+  {
+    case VTK_SCALAR_MODE_USE_POINT_DATA:
+      a = grid->GetPointData()->GetScalars();
+      error = a ? "" : "ScalarMode is UsePointData but the input has no point scalars";
+      break;
+    case VTK_SCALAR_MODE_USE_CELL_DATA:
+      a = grid->GetCellData()->GetScalars();
+      onCells = true;
+      error = a ? "" : "ScalarMode is UseCellData but the input has no cell scalars";
+      break;
+    case VTK_SCALAR_MODE_USE_POINT_FIELD_DATA:
+    case VTK_SCALAR_MODE_USE_CELL_FIELD_DATA:
+    {
+      onCells = mode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
+      vtkFieldData* fd = onCells ? static_cast<vtkFieldData*>(grid->GetCellData())
+                                 : static_cast<vtkFieldData*>(grid->GetPointData());
+      a = name ? fd->GetArray(name) : fd->GetArray(id);
+      if (!a)
+      {
+        const std::string what = name ? "'" + std::string(name) + "'" : "number " + std::to_string(id);
+        error = std::string("the input has no ") + (onCells ? "cell" : "point") + " array " + what +
+          " (SelectScalarArray; its arrays: " + art::ArrayNames({ grid->GetPointData(), grid->GetCellData() }) + ")";
+      }
+      break;
+    }
+    default:
+      key = "default";
+      return grid;
+  }
+  if (!a)
+  {
+    return nullptr;
+  }
+  if (a->GetNumberOfComponents() != 1)
+  {
+    error = std::string(onCells ? "cell" : "point") + " array '" + (a->GetName() ? a->GetName() : "") + "' has " +
+      std::to_string(a->GetNumberOfComponents()) +
+      " components; the mapper renders one (select another with SelectScalarArray, or extract a component)";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkDataArray> named = a;
+  if (!a->GetName() || !*a->GetName())
+  {
+    // FromVTK averages cell arrays to the points by name.
+    named.TakeReference(a->NewInstance());
+    named->ShallowCopy(a);
+    named->SetName("scalars");
+  }
+  auto view = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  view->CopyStructure(grid);
+  (onCells ? static_cast<vtkDataSetAttributes*>(view->GetCellData()) : view->GetPointData())->SetScalars(named);
+  key = std::to_string(mode) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(a));
+  return view;
+}
 } // namespace
 
 struct vtkTetRayCastMapper::Internals
@@ -206,27 +272,24 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkErrorMacro("input must be a vtkUnstructuredGrid");
     return;
   }
-  // The array the usual vtkAbstractVolumeMapper settings select (SelectScalarArray with a field
-  // scalar mode); default: the active point scalars, else cell scalars (TetMesh::FromVTK).
-  std::string array;
-  if (this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA || this->ScalarMode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
+  // The array the usual vtkAbstractVolumeMapper settings select (ScalarMode, SelectScalarArray).
+  std::string key, error;
+  vtkSmartPointer<vtkUnstructuredGrid> engineGrid = SelectedScalars(grid, this->ScalarMode,
+    this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME ? this->ArrayName : nullptr, this->ArrayId, key, error);
+  if (!engineGrid)
   {
-    vtkFieldData* fd = this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA
-      ? static_cast<vtkFieldData*>(grid->GetPointData())
-      : static_cast<vtkFieldData*>(grid->GetCellData());
-    const char* name = this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME ? this->ArrayName
-                                                                      : fd->GetArrayName(this->ArrayId);
-    array = name ? name : "";
+    vtkErrorMacro(<< error);
+    return;
   }
   // (Re)build the engine's arrays only when the data or the array changed.
   if (!this->Impl->Mesh || this->Impl->MeshInput != input || this->Impl->MeshTime < input->GetMTime() ||
-    this->Impl->MeshArray != array)
+    this->Impl->MeshArray != key)
   {
     try
     {
       std::string note;
       this->Impl->Caster.reset();
-      this->Impl->Mesh = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(grid, array, &note));
+      this->Impl->Mesh = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(engineGrid, {}, &note));
       this->Impl->Caster = std::make_unique<art::TetRayCaster>(*this->Impl->Mesh, art::RenderSettings{});
       if (!note.empty())
       {
@@ -242,7 +305,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
     this->Impl->MeshInput = input;
     this->Impl->MeshTime = input->GetMTime();
-    this->Impl->MeshArray = array;
+    this->Impl->MeshArray = key;
   }
   // A frame's time, for AutoAdjustSampleDistances, leaves out (re)building the mesh.
   const auto frameStart = std::chrono::steady_clock::now();

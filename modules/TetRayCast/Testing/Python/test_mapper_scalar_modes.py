@@ -1,0 +1,141 @@
+"""vtkTetRayCastMapper follows the mapper's ScalarMode as VTK's volume mappers do.
+
+A 2 x 2 x 2 box seen straight on whose point scalars are 1 (green), a point array 'two' is 2
+(red), its cell scalars 'cellz' are 0 (blue) and a cell array also named 'two' is 0: each mode
+must show its array's colour at the closed-form opacity, switching modes re-renders, and a
+missing or vector array is an error naming it. Needs a display (skips with exit 77).
+"""
+import os
+import sys
+
+if not os.environ.get("DISPLAY"):
+    print("no DISPLAY: skipped (run under xvfb-run -a)")
+    sys.exit(77)
+
+import numpy as np
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.vtkConstants import VTK_STRING
+from vtkmodules.vtkCommonCore import vtkCommand, vtkFloatArray
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
+                                         vtkVolumeProperty, vtkWindowToImageFilter)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+
+import adaptivert
+
+image = vtkImageData()
+image.SetDimensions(5, 5, 5)
+image.SetOrigin(-1, -1, -1)
+image.SetSpacing(0.5, 0.5, 0.5)
+image.AllocateScalars(10, 1)  # VTK_FLOAT
+image.GetPointData().GetScalars().Fill(1.0)
+tri = vtkDataSetTriangleFilter()
+tri.SetInputData(image)
+tri.Update()
+grid = tri.GetOutput()
+
+
+def array(name, n, value, components=1):
+    a = vtkFloatArray()
+    a.SetName(name)
+    a.SetNumberOfComponents(components)
+    a.SetNumberOfTuples(n)
+    a.Fill(value)
+    return a
+
+
+grid.GetPointData().AddArray(array("two", grid.GetNumberOfPoints(), 2.0))
+grid.GetPointData().AddArray(array("velocity", grid.GetNumberOfPoints(), 1.0, 3))
+grid.GetCellData().SetScalars(array("cellz", grid.GetNumberOfCells(), 0.0))
+grid.GetCellData().AddArray(array("two", grid.GetNumberOfCells(), 0.0))
+
+ctf = vtkColorTransferFunction()
+ctf.AddRGBPoint(0, 0, 0, 1)
+ctf.AddRGBPoint(1, 0, 1, 0)
+ctf.AddRGBPoint(2, 1, 0, 0)
+otf = vtkPiecewiseFunction()
+otf.AddPoint(0, 0.5)
+otf.AddPoint(2, 0.5)
+prop = vtkVolumeProperty()
+prop.SetColor(ctf)
+prop.SetScalarOpacity(otf)
+prop.SetScalarOpacityUnitDistance(1.0)
+
+mapper = adaptivert.vtkTetRayCastMapper()
+mapper.SetInputData(grid)
+mapper.AutoAdjustSampleDistancesOff()
+errors = []
+
+
+@calldata_type(VTK_STRING)
+def on_message(obj, event, text):
+    if event == "ErrorEvent":
+        errors.append(text)
+
+
+mapper.AddObserver(vtkCommand.ErrorEvent, on_message)
+mapper.AddObserver(vtkCommand.WarningEvent, on_message)  # cell scalars averaged to the points
+volume = vtkVolume()
+volume.SetMapper(mapper)
+volume.SetProperty(prop)
+ren = vtkRenderer()
+ren.SetBackground(0, 0, 0)
+ren.AddVolume(volume)
+win = vtkRenderWindow()
+win.SetOffScreenRendering(1)
+win.SetSize(60, 60)
+win.AddRenderer(ren)
+cam = ren.GetActiveCamera()
+cam.ParallelProjectionOn()
+cam.SetPosition(0, 0, 10)
+cam.SetFocalPoint(0, 0, 0)
+cam.SetViewUp(0, 1, 0)
+cam.SetParallelScale(1.5)
+ren.ResetCameraClippingRange()
+
+
+def centre():
+    win.Render()
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(win)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    img = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(60, 60, 3) / 255.0
+    return img[25:35, 25:35].reshape(-1, 3).mean(axis=0)
+
+
+a = 1 - 0.5 ** 2  # opacity 0.5 per unit through 2 units of thickness
+green, red, blue = np.array((0, a, 0)), np.array((a, 0, 0)), np.array((0, 0, a))
+cases = [
+    ("default", lambda: mapper.SetScalarModeToDefault(), green),
+    ("UseCellData", lambda: mapper.SetScalarModeToUseCellData(), blue),
+    ("UsePointData", lambda: mapper.SetScalarModeToUsePointData(), green),
+    ("UsePointFieldData 'two'", lambda: (mapper.SetScalarModeToUsePointFieldData(), mapper.SelectScalarArray("two")), red),
+    ("UseCellFieldData 'two'", lambda: (mapper.SetScalarModeToUseCellFieldData(), mapper.SelectScalarArray("two")), blue),
+    ("UsePointFieldData by id 1", lambda: (mapper.SetScalarModeToUsePointFieldData(), mapper.SelectScalarArray(1)), red),
+    ("back to default", lambda: mapper.SetScalarModeToDefault(), green),
+]
+for label, select, want in cases:
+    select()
+    got = centre()
+    print(f"{label}: shown {np.round(got, 3)}, expected {np.round(want, 3)}")
+    assert not errors, errors
+    assert np.abs(got - want).max() < 3 / 255, (label, got, want)
+
+for label, select, words in [
+    ("missing", lambda: (mapper.SetScalarModeToUsePointFieldData(), mapper.SelectScalarArray("nope")),
+     "no point array 'nope'"),
+    ("vector", lambda: (mapper.SetScalarModeToUsePointFieldData(), mapper.SelectScalarArray("velocity")),
+     "'velocity' has 3 components; the mapper renders one"),
+    ("no cell scalars", lambda: (mapper.SetScalarModeToUseCellData(), grid.GetCellData().SetActiveScalars(None)),
+     "no cell scalars"),
+]:
+    errors.clear()
+    select()
+    centre()
+    print(f"{label}: {errors[:1]}")
+    assert errors and words in errors[0], (label, errors)
+print("ok")
