@@ -130,6 +130,26 @@ EntryFinder::EntryFinder(const TetMesh& m, const Camera& cam, const std::vector<
   }
 }
 
+bool EntryFinder::Empty(int x0, int y0, int x1, int y1) const
+{
+  if (!Bucketed || !Global.empty() || x0 < 0 || y0 < 0 || x1 > W || y1 > H)
+  {
+    return false;
+  }
+  for (int by = y0 / B; by <= (y1 - 1) / B; ++by)
+  {
+    for (int bx = x0 / B; bx <= (x1 - 1) / B; ++bx)
+    {
+      const int k = by * BW + bx;
+      if (Start[k + 1] > Start[k])
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 bool EntryFinder::Test(const TetWalker& w, const Ray& r, int b, Entry& e) const
 {
   const auto& bf = F[b];

@@ -40,6 +40,10 @@ public:
   void Find(const TetWalker& w, const Ray& r, int px, int py, bool all, std::vector<Entry>& out,
     int& hint, Counters& c) const;
 
+  /// True when no ray through the pixels [x0, x1) x [y0, y1) can find an entry: their buckets
+  /// are empty and no face is tested by every ray.
+  bool Empty(int x0, int y0, int x1, int y1) const;
+
   /// Faces every ray tests (across the eye's plane, or all without a camera).
   std::size_t GlobalCount() const { return Global.size(); }
 

@@ -275,6 +275,13 @@ struct TetRayCaster::Impl
     RenderStats st;
     st.counters = ForEachTile(cam.Width(), cam.Height(), rc.S.tileSize,
       [&](const Tile& tile, Counters& c) {
+        // A tile no face projects onto keeps the background: its rays are not even made (most
+        // of a frame around a head; rays from inside the mesh start in the eye's tet).
+        if (eyeTet < 0 && finder->Empty(tile.x0, tile.y0, tile.x1, tile.y1))
+        {
+          c.rays += static_cast<std::uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0);
+          return;
+        }
         std::vector<Entry> entries;
         std::uint64_t nd = 0;
         int hint = -1;
