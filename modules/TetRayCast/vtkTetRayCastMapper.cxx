@@ -16,17 +16,23 @@
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkDataSetTriangleFilter.h>
+#include <vtkTetra.h>
+#include <vtkPlane.h>
+#include <vtkPlaneCollection.h>
 #include <vtkPointData.h>
 #include <vtkRayCastImageDisplayHelper.h>
 #include <vtkCellData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkTableBasedClipDataSet.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkVolume.h>
 #include <vtkVolumeProperty.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -203,6 +209,91 @@ vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(
   key = std::to_string(mode) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(a));
   return view;
 }
+// The mapper's clipping planes (world coordinates, keeping the side their normal points to, as
+// VTK's mappers do) in the data's coordinates: (a, b, c, d) with a x + b y + c z + d >= 0 kept.
+std::vector<std::array<double, 4>> PlanesInData(vtkPlaneCollection* planes, vtkMatrix4x4* toWorld)
+{
+  std::vector<std::array<double, 4>> out;
+  if (!planes)
+  {
+    return out;
+  }
+  for (int i = 0; i < planes->GetNumberOfItems(); ++i)
+  {
+    vtkPlane* p = planes->GetItem(i);
+    double n[3], o[3];
+    p->GetNormal(n);
+    p->GetOrigin(o);
+    // n . (M x - o) = (M^T n) . x - n . o
+    std::array<double, 4> q{};
+    for (int c = 0; c < 3; ++c)
+    {
+      q[c] = n[0] * toWorld->GetElement(0, c) + n[1] * toWorld->GetElement(1, c) + n[2] * toWorld->GetElement(2, c);
+    }
+    double t[3] = { toWorld->GetElement(0, 3), toWorld->GetElement(1, 3), toWorld->GetElement(2, 3) };
+    q[3] = n[0] * (t[0] - o[0]) + n[1] * (t[1] - o[1]) + n[2] * (t[2] - o[2]);
+    out.push_back(q);
+  }
+  return out;
+}
+
+// grid cut by each plane in turn (exact for the linear field inside each tet).
+vtkSmartPointer<vtkUnstructuredGrid> Clipped(vtkUnstructuredGrid* grid, const std::vector<std::array<double, 4>>& planes)
+{
+  vtkSmartPointer<vtkUnstructuredGrid> g = grid;
+  for (const auto& q : planes)
+  {
+    const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    if (!(len > 0))
+    {
+      continue;
+    }
+    vtkNew<vtkPlane> plane;
+    plane->SetNormal(q[0] / len, q[1] / len, q[2] / len);
+    plane->SetOrigin(-q[3] * q[0] / (len * len), -q[3] * q[1] / (len * len), -q[3] * q[2] / (len * len));
+    vtkNew<vtkTableBasedClipDataSet> clip;
+    clip->SetInputData(g);
+    clip->SetClipFunction(plane);
+    clip->Update();
+    g = clip->GetOutput();
+    if (g->GetNumberOfCells() == 0)
+    {
+      return g;
+    }
+  }
+  // A plane through vertices leaves cells of no volume (wedges collapsed onto it), which the walk
+  // cannot link: the pieces are cut into tets and the flat ones left out.
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputData(g);
+  tets->Update();
+  vtkUnstructuredGrid* t = tets->GetOutput();
+  const double d = t->GetLength(), flat = 1e-12 * d * d * d;
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->SetPoints(t->GetPoints());
+  out->GetPointData()->ShallowCopy(t->GetPointData());
+  out->GetCellData()->CopyAllocate(t->GetCellData(), t->GetNumberOfCells());
+  out->Allocate(t->GetNumberOfCells());
+  for (vtkIdType c = 0; c < t->GetNumberOfCells(); ++c)
+  {
+    double p[4][3];
+    vtkIdType n;
+    const vtkIdType* ids;
+    t->GetCellPoints(c, n, ids);
+    if (t->GetCellType(c) != VTK_TETRA || n != 4)
+    {
+      continue;
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      t->GetPoint(ids[k], p[k]);
+    }
+    if (std::fabs(vtkTetra::ComputeVolume(p[0], p[1], p[2], p[3])) > flat)
+    {
+      out->GetCellData()->CopyData(t->GetCellData(), c, out->InsertNextCell(VTK_TETRA, 4, ids));
+    }
+  }
+  return out;
+}
 } // namespace
 
 struct vtkTetRayCastMapper::Internals
@@ -281,7 +372,16 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkErrorMacro(<< error);
     return;
   }
-  // (Re)build the engine's arrays only when the data or the array changed.
+  vtkMatrix4x4* toWorld = vol->GetMatrix();
+  vtkNew<vtkMatrix4x4> toData;
+  vtkMatrix4x4::Invert(toWorld, toData);
+  const std::vector<std::array<double, 4>> planes = PlanesInData(this->ClippingPlanes, toWorld);
+  for (const auto& pl : planes)
+  {
+    key += " clip " + std::to_string(pl[0]) + "," + std::to_string(pl[1]) + "," + std::to_string(pl[2]) + "," +
+      std::to_string(pl[3]);
+  }
+  // (Re)build the engine's arrays only when the data, the array or the clipping planes changed.
   if (!this->Impl->Mesh || this->Impl->MeshInput != input || this->Impl->MeshTime < input->GetMTime() ||
     this->Impl->MeshArray != key)
   {
@@ -289,9 +389,18 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       std::string note;
       this->Impl->Caster.reset();
+      this->Impl->Mesh.reset();
+      if (!planes.empty())
+      {
+        engineGrid = Clipped(engineGrid, planes);
+        if (engineGrid->GetNumberOfCells() == 0)
+        {
+          return; // everything is clipped away: nothing to draw
+        }
+      }
       this->Impl->Mesh = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(engineGrid, {}, &note));
       this->Impl->Caster = std::make_unique<art::TetRayCaster>(*this->Impl->Mesh, art::RenderSettings{});
-      if (!note.empty())
+      if (!note.empty() && planes.empty()) // a clip's own leftovers (unused points) are no news
       {
         vtkWarningMacro(<< note);
       }
@@ -341,9 +450,6 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // Rays are cast in the data's own coordinates: the camera goes through the inverse of the
   // volume's matrix (exact for rotations, translations and uniform scales; segment lengths, and
   // so the opacity unit distance, are measured in data units).
-  vtkMatrix4x4* toWorld = vol->GetMatrix();
-  vtkNew<vtkMatrix4x4> toData;
-  vtkMatrix4x4::Invert(toWorld, toData);
   vtkNew<vtkCamera> local;
   local->DeepCopy(ren->GetActiveCamera());
   if (!toWorld->IsIdentity() && !IntoData(local, toWorld, toData) && !this->WarnedNonUniform)

@@ -11,7 +11,10 @@
  * VTK's own ray cast mappers. Non-tetrahedral cells are tetrahedralised first. The volume's
  * matrix (position, orientation, uniform scale) is honoured by casting in the data's coordinates;
  * an anisotropic scale is approximated (with a warning). Opaque geometry in the scene ends the
- * rays at its depth (IntermixIntersectingGeometry). As VTK's own volume mappers, each frame fires
+ * rays at its depth (IntermixIntersectingGeometry). The mapper's ScalarMode and SelectScalarArray
+ * choose the field (cell values are averaged to the points). Clipping planes (AddClippingPlane,
+ * world coordinates, the side the normal points to kept) cut the mesh itself, exact for its linear
+ * field; moving a plane rebuilds the mesh. As VTK's own volume mappers, each frame fires
  * VolumeMapperRenderStartEvent, VolumeMapperRenderProgressEvent (call data: a double in [0, 1],
  * on the thread that called Render) and VolumeMapperRenderEndEvent; when the render window's
  * abort check says so (an interactor's pending event), the frame stops and is not drawn.
