@@ -16,6 +16,7 @@
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPiecewiseFunction.h>
 #include <vtkDataSetTriangleFilter.h>
 #include <vtkTetra.h>
 #include <vtkPlane.h>
@@ -419,6 +420,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // A frame's time, for AutoAdjustSampleDistances, leaves out (re)building the mesh.
   const auto frameStart = std::chrono::steady_clock::now();
   art::RenderSettings s;
+  this->WarnUnsupported(vol->GetProperty());
   try
   {
     s.tf = art::TransferFunction::FromVTK(vol->GetProperty());
@@ -526,6 +528,40 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   this->Impl->Helper->SetPreMultipliedColors(1);
   this->Impl->Helper->RenderTexture(vol, ren, mem, view, use, origin, static_cast<float>(minZ), bytes.data());
   this->LastFrameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
+}
+
+void vtkTetRayCastMapper::WarnUnsupported(vtkVolumeProperty* p)
+{
+  // Said once each, as the property is read every frame: VTK's own unstructured-grid mappers
+  // drop these without a word, which leaves a user wondering why the setting does nothing.
+  if (!p)
+  {
+    return;
+  }
+  if (p->GetShade(0) && !(this->Warned & 1))
+  {
+    this->Warned |= 1;
+    vtkWarningMacro("the vtkVolumeProperty's shading (ShadeOn) is not supported and is ignored; iso-surfaces "
+                    "(AddIsoSurface) are shaded");
+  }
+  bool gradient = p->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D;
+  if (!gradient && p->HasGradientOpacity(0) && !p->GetDisableGradientOpacity(0))
+  {
+    // A set function that is not 1 everywhere (VTK's default) would change the image.
+    vtkPiecewiseFunction* g = p->GetStoredGradientOpacity(0);
+    double node[4];
+    for (int i = 0; g && i < g->GetSize() && !gradient; ++i)
+    {
+      g->GetNodeValue(i, node);
+      gradient = node[1] != 1.0;
+    }
+  }
+  if (gradient && !(this->Warned & 2))
+  {
+    this->Warned |= 2;
+    vtkWarningMacro("gradient opacity (SetGradientOpacity, or a 2-D transfer function) is not supported and is "
+                    "ignored: opacity follows the scalar-opacity function only");
+  }
 }
 
 void vtkTetRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)

@@ -27,6 +27,7 @@
 
 class vtkImageData;
 class vtkRayCastImageDisplayHelper;
+class vtkVolumeProperty;
 
 class ADAPTIVERTTETRAYCAST_EXPORT vtkTetRayCastMapper : public vtkUnstructuredGridVolumeMapper
 {
@@ -112,6 +113,10 @@ protected:
   double LastRenderTime = 0.0;
   double LastTetsCrossed = 0.0;
   bool WarnedNonUniform = false;
+  int Warned = 0; ///< unsupported property settings already named: 1 shading, 2 gradient opacity
+
+  /** Warns, once each, of property settings the mapper does not follow (shading, gradient opacity). */
+  void WarnUnsupported(vtkVolumeProperty* p);
 
 private:
   vtkTetRayCastMapper(const vtkTetRayCastMapper&) = delete;

@@ -1,0 +1,85 @@
+"""vtkTetRayCastMapper says, once each, that it ignores volume shading and gradient opacity.
+
+VTK's own unstructured-grid mappers drop both silently; the image must stay the same (the mapper
+does not follow them) and a warning must name each, once, however many frames are drawn. An
+unchanged default (gradient opacity 1 everywhere) is no news. Needs a display (skips with exit 77).
+"""
+import os
+import sys
+
+if not os.environ.get("DISPLAY"):
+    print("no DISPLAY: skipped (run under xvfb-run -a)")
+    sys.exit(77)
+
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_STRING
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
+from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
+                                         vtkVolumeProperty)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+
+import adaptivert
+
+image = vtkImageData()
+image.SetDimensions(4, 4, 4)
+image.AllocateScalars(10, 1)  # VTK_FLOAT
+image.GetPointData().GetScalars().Fill(1.0)
+tri = vtkDataSetTriangleFilter()
+tri.SetInputData(image)
+tri.Update()
+ctf = vtkColorTransferFunction()
+ctf.AddRGBPoint(0, 1, 1, 1)
+otf = vtkPiecewiseFunction()
+otf.AddPoint(0, 0.3)
+otf.AddPoint(2, 0.3)
+prop = vtkVolumeProperty()
+prop.SetColor(ctf)
+prop.SetScalarOpacity(otf)
+
+mapper = adaptivert.vtkTetRayCastMapper()
+mapper.SetInputData(tri.GetOutput())
+warnings = []
+
+
+@calldata_type(VTK_STRING)
+def on_warning(obj, event, text):
+    warnings.append(text)
+
+
+mapper.AddObserver(vtkCommand.WarningEvent, on_warning)
+volume = vtkVolume()
+volume.SetMapper(mapper)
+volume.SetProperty(prop)
+ren = vtkRenderer()
+ren.AddVolume(volume)
+win = vtkRenderWindow()
+win.SetOffScreenRendering(1)
+win.SetSize(32, 32)
+win.AddRenderer(ren)
+ren.ResetCamera()
+
+
+def frames(n=2):
+    for _ in range(n):
+        win.Render()
+    return list(warnings)
+
+
+assert frames() == [], warnings
+prop.GetGradientOpacity()  # creates VTK's default (1 everywhere): nothing changes
+prop.SetGradientOpacity(prop.GetGradientOpacity())
+assert frames() == [], warnings
+prop.ShadeOn()
+got = frames(3)
+print(got)
+assert len(got) == 1 and "shading (ShadeOn) is not supported" in got[0], got
+ramp = vtkPiecewiseFunction()
+ramp.AddPoint(0, 0.0)
+ramp.AddPoint(10, 1.0)
+prop.SetGradientOpacity(ramp)
+got = frames(3)
+print(got[1:])
+assert len(got) == 2 and "gradient opacity" in got[1], got
+print("ok")
