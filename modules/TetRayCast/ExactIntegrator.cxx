@@ -224,14 +224,18 @@ void ExactIntegrator::IntegrateSpan(double s0, double s1, double length, RayAccu
     TF.EvaluateIn(i0, s0, ca, ta);
   }
   auto composite = [&](double l) {
-    IntegrateLinearPiece(ca, cb, ta, tb, l, C, T);
-    for (int k = 0; k < 3; ++k)
+    // A piece between two transparent control points adds nothing (a third of the pieces on the
+    // CT head's skin-and-bone function).
+    if (ta > 0.0 || tb > 0.0)
     {
-      acc.rgb[k] += acc.T * C[k];
-      ca[k] = cb[k];
+      IntegrateLinearPiece(ca, cb, ta, tb, l, C, T);
+      for (int k = 0; k < 3; ++k)
+      {
+        acc.rgb[k] += acc.T * C[k];
+      }
+      acc.T *= T;
     }
-    acc.T *= T;
-    ta = tb;
+    ca[0] = cb[0], ca[1] = cb[1], ca[2] = cb[2], ta = tb;
   };
   // Pieces end at the control points strictly between s0 and s1, in the order the ray meets them.
   const double ds = s1 - s0;
