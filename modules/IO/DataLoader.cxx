@@ -1,5 +1,6 @@
 #include "DataLoader.h"
 #include "ArrayChoice.h"
+#include "CellVoxels.h"
 #include "AtomicFile.h"
 #include "DicomSeries.h"
 #include "Error.h"
@@ -299,25 +300,7 @@ vtkSmartPointer<vtkImageData> CellsAsVoxels(vtkImageData* img, const std::string
   {
     return img;
   }
-  int e[6];
-  img->GetExtent(e);
-  int n[3];
-  double centre[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    const int points = e[2 * a + 1] - e[2 * a] + 1;
-    n[a] = std::max(points - 1, 1); // a flat axis keeps its one layer of cells
-    centre[a] = e[2 * a] + (points > 1 ? 0.5 : 0.0);
-  }
-  double o[3];
-  img->TransformContinuousIndexToPhysicalPoint(centre, o);
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->SetDimensions(n);
-  out->SetSpacing(img->GetSpacing());
-  out->SetOrigin(o);
-  out->SetDirectionMatrix(img->GetDirectionMatrix());
-  out->GetPointData()->PassData(cd);
-  return out;
+  return CellVoxels(img, cd);
 }
 
 // NIfTI stores values as slope * stored + intercept (a CT in Hounsfield units is often uint16 with

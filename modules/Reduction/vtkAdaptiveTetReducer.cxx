@@ -1,4 +1,6 @@
 #include "vtkAdaptiveTetReducer.h"
+#include "ArrayChoice.h"
+#include "CellVoxels.h"
 
 #include "Error.h"
 #include "Progress.h"
@@ -7,6 +9,7 @@
 
 #include <algorithm>
 
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -155,7 +158,29 @@ int vtkAdaptiveTetReducer::RequestData(
                     << "' (point arrays: " << (names.empty() ? "none" : names) << ").");
       return 0;
     }
-    if (chosen && chosen != input->GetPointData()->GetScalars())
+    vtkCellData* cd = input->GetCellData();
+    bool onCells = false;
+    for (int i = 0; chosen && i < cd->GetNumberOfArrays(); ++i)
+    {
+      onCells = onCells || cd->GetAbstractArray(i) == chosen;
+    }
+    if (!chosen && !input->GetPointData()->GetScalars())
+    {
+      // Values on the cells only (labels, finite-volume output): they are the voxels.
+      chosen = art::ChooseArray(cd, "");
+      onCells = chosen != nullptr;
+    }
+    vtkSmartPointer<vtkImageData> voxels;
+    if (onCells)
+    {
+      // A cell array is one voxel per cell, at the cell's centre (it did not match the points:
+      // 'the scalar array does not match the image dimensions').
+      vtkNew<vtkCellData> one;
+      one->SetScalars(chosen);
+      voxels = art::CellVoxels(input, one);
+      image = voxels;
+    }
+    else if (chosen && chosen != input->GetPointData()->GetScalars())
     {
       selected->ShallowCopy(input);
       selected->GetPointData()->SetScalars(chosen);

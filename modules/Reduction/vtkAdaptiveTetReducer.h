@@ -15,7 +15,9 @@
  * level added with AddLevel (a nested series from one run, coarsest first) and the final grid.
  *
  * The reduced array is the point scalars, or the one given with SetInputArrayToProcess(0, 0, 0,
- * vtkDataObject::FIELD_ASSOCIATION_POINTS, name).
+ * vtkDataObject::FIELD_ASSOCIATION_POINTS, name). Values on the cells (the cell scalars of an image
+ * without point scalars, or a cell array given with FIELD_ASSOCIATION_CELLS) are one voxel per cell
+ * at its centre, as the file loader reads them: the mesh spans the cell centres.
  * The input needs one scalar component and at least 2 voxels along each axis; any scalar type,
  * spacing, origin and direction. Progress events are fired between refinement levels.
  */
