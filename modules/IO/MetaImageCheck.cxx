@@ -210,6 +210,14 @@ void CheckMetaImage(const std::string& path)
   {
     throw Error("DimSize is empty", path);
   }
+  // vtkMetaImageReader (VTK 9.1) corrupts its heap on a file of more than three axes, even when
+  // the further ones hold one sample ("double free or corruption").
+  if (ndims > 3)
+  {
+    throw Error("a " + std::to_string(ndims) + "-D image (DimSize " + keys["DimSize"] +
+        "): only 3-D volumes are read; save one volume (a time step or channel) as its own 3-D file",
+      path);
+  }
   const int esize = ElementSize(keys["ElementType"]);
   if (esize == 0)
   {

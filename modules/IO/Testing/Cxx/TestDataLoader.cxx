@@ -469,6 +469,22 @@ TEST(DataLoader, MetaImageHeaderNumbers)
   EXPECT_EQ(art::LoadVolume(write("fine.mha", "DimSize = 2 2 2\n"))->GetNumberOfPoints(), 8);
 }
 
+// A 4-D MetaImage (a time series, as ITK and 3D Slicer write them): vtkMetaImageReader killed the
+// process with a heap corrupted ("double free or corruption"), even with a fourth axis of one sample.
+TEST(DataLoader, MetaImageFourAxes)
+{
+  auto write = [](const std::string& name, const std::string& dims, int bytes) {
+    const std::string p = std::string(ART_TEST_OUTPUT) + "/" + name;
+    std::ofstream(p, std::ios::binary) << "ObjectType = Image\nNDims = 4\nDimSize = " << dims
+                                       << "\nElementType = MET_UCHAR\nElementDataFile = LOCAL\n"
+                                       << std::string(bytes, '\x07');
+    return p;
+  };
+  ExpectError(write("time.mha", "6 5 4 3", 360),
+    "a 4-D image (DimSize 6 5 4 3): only 3-D volumes are read; save one volume (a time step or channel) as its own 3-D file");
+  ExpectError(write("one-step.mha", "6 5 4 1", 120), "a 4-D image (DimSize 6 5 4 1)");
+}
+
 // vtkPLYReader (VTK 9.1) segfaulted on a face index past the vertex count and on an ASCII face
 // line shorter than its count; the body is read through once before VTK sees it.
 // A MetaImage slice series (ElementDataFile = LIST, or "pattern first last step"): vtkMetaImageReader
