@@ -173,11 +173,13 @@ vtkSmartPointer<vtkImageData> PlaceNrrd(vtkImageData* img, const std::string& pa
   out->ShallowCopy(img);
   bool rebuilt = false;
 
-  // vtkNrrdReader makes a first axis of <= 9 samples the components; undo it when the header
-  // says the axis is in space (the voxels' memory order is the same either way).
+  // vtkNrrdReader makes a first axis of <= 9 samples the components; undo it unless the header
+  // says the axis is not in space (a kind such as vector, or no space direction): three axes are
+  // a volume, and a minimal header (type, dimension, sizes, encoding) names neither (the voxels'
+  // memory order is the same either way).
   vtkDataArray* s = img->GetPointData()->GetScalars();
   const bool spatialFirst = sizes.size() == 3 &&
-    (kinds.size() == 3 ? (kinds[0] == "domain" || kinds[0] == "space") : (dirs.size() == 3 && !dirs[0].empty()));
+    (kinds.size() == 3 ? (kinds[0] == "domain" || kinds[0] == "space") : (dirs.size() != 3 || !dirs[0].empty()));
   if (spatialFirst && s && s->GetNumberOfComponents() > 1 && s->GetNumberOfComponents() == sizes[0])
   {
     vtkSmartPointer<vtkDataArray> one = vtk::TakeSmartPointer(s->NewInstance());

@@ -494,6 +494,13 @@ TEST(Formats, NrrdNarrowFirstAxisAndSpaces)
     expectAt("las-" + n + ".nrrd", nx, { 10, -20, 30 }, { 0.5, -2, 3 });
     write("left-handed-" + n + ".nrrd", nx, "space: 3D-left-handed\n" + directions);
     expectAt("left-handed-" + n + ".nrrd", nx, { 10, 20, 30 }, { 0.5, 2, 3 });
+    // A minimal header (type, dimension, sizes, encoding: as unu and pynrrd write them) names
+    // neither kinds nor directions: three axes are a volume (4 x 3 x 2 was read as 3 x 2 x 1
+    // voxels of 4 components).
+    write("minimal-" + n + ".nrrd", nx, "");
+    expectAt("minimal-" + n + ".nrrd", nx, { 0, 0, 0 }, { 1, 1, 1 });
+    write("spacings-" + n + ".nrrd", nx, "spacings: 0.5 2 3\n");
+    expectAt("spacings-" + n + ".nrrd", nx, { 0, 0, 0 }, { 0.5, 2, 3 });
   }
   // A first axis the header calls a vector stays the components.
   write("vectors.nrrd", 4, "kinds: vector domain domain\n");
