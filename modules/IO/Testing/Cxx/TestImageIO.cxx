@@ -89,6 +89,39 @@ TEST(ImageIO, PngQuantisesTo8BitsAndKeepsRowOrder)
   }
 }
 
+namespace
+{
+bool OpenImageIOLoaded()
+{
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line))
+  {
+    if (line.find("libOpenImageIO") != std::string::npos)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}
+
+// OpenImageIO's ~260 libraries cost every program linking it half a second at start-up, so it is
+// a plug-in loaded on the first image that is not a PNG. (ctest runs each test in its own process.)
+TEST(ImageIO, OpenImageIOIsLoadedOnlyForOtherFormats)
+{
+  if (OpenImageIOLoaded())
+  {
+    GTEST_SKIP() << "an earlier test in this process loaded it";
+  }
+  const std::string p = TempDir() + "/lazy.png";
+  art::WriteImage(Image(3, 2, { 0.5f, 0.25f, 1.f, 1.f }), p);
+  EXPECT_NEAR(art::ReadImage(p).Pixel(2, 1)[1], 64 / 255.f, 1e-6);
+  EXPECT_FALSE(OpenImageIOLoaded());
+  art::WriteImage(Image(3, 2, { 0.5f, 0.25f, 1.f, 1.f }), TempDir() + "/lazy.exr");
+  EXPECT_TRUE(OpenImageIOLoaded());
+}
+
 TEST(ImageIO, FailedWriteLeavesExistingFileAndNoTemp)
 {
   const std::string dir = TempDir();
