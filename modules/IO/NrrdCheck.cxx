@@ -68,6 +68,30 @@ void CheckNrrd(const std::string& path)
     throw Error("cannot open file", path);
   }
   std::map<std::string, std::string> keys = ReadNrrdFields(in);
+  if (in.eof())
+  {
+    // No blank line ends the header. vtkNrrdReader (VTK 9.1) never returned on such a file when
+    // its last line had no line end (a detached .nhdr saved without a final newline).
+    const bool detached = keys.count("data file") || keys.count("datafile");
+    std::ifstream last(path, std::ios::binary | std::ios::ate);
+    char c = '\n';
+    if (last.tellg() > 0)
+    {
+      last.seekg(-1, std::ios::end);
+      last.get(c);
+    }
+    if (!detached)
+    {
+      throw Error("the header has no blank line before its data (a NRRD header ends with an empty line)", path);
+    }
+    if (c != '\n')
+    {
+      throw Error("the header's last line has no line end, on which VTK's NRRD reader never returns: end the "
+                  "file with a newline",
+        path);
+    }
+  }
+  in.clear();
   const std::streamoff attachedStart = in.tellg();
   const int esize = NrrdTypeSize(keys["type"]);
   const std::string encoding = keys["encoding"];

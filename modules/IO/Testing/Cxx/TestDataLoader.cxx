@@ -544,6 +544,21 @@ TEST(DataLoader, PlyFacesAreChecked)
   EXPECT_EQ(art::LoadSurface(p)->GetNumberOfPolys(), 2);
 }
 
+// vtkNrrdReader (VTK 9.1) never returned on a detached header whose last line has no line end (a
+// .nhdr saved without a final newline), nor on attached data with no blank line before it.
+TEST(DataLoader, NrrdHeaderWithoutEnd)
+{
+  const std::string dir = std::string(ART_TEST_OUTPUT) + "/";
+  const std::string header = "NRRD0004\ntype: short\ndimension: 3\nsizes: 4 3 2\nencoding: raw\nendian: little\n";
+  std::ofstream(dir + "end.raw", std::ios::binary) << std::string(48, 'x');
+  std::ofstream(dir + "no-newline.nhdr", std::ios::binary) << header << "data file: end.raw";
+  ExpectError(dir + "no-newline.nhdr", "the header's last line has no line end");
+  std::ofstream(dir + "newline.nhdr", std::ios::binary) << header << "data file: end.raw\n";
+  EXPECT_EQ(art::LoadVolume(dir + "newline.nhdr")->GetNumberOfPoints(), 24);
+  std::ofstream(dir + "no-blank.nrrd", std::ios::binary) << header << std::string(48, 'x');
+  ExpectError(dir + "no-blank.nrrd", "the header has no blank line before its data");
+}
+
 // vtkNrrdReader reported raw data shorter than the header's sizes as "File operation failed:
 // 18446744073709305856, ext: ..."; the size is checked first, for attached and detached data.
 TEST(DataLoader, TruncatedNrrd)
