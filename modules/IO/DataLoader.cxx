@@ -525,6 +525,10 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   }
   if (e == ".nrrd" || e == ".nhdr")
   {
+    if (vtkDataArray* s = img->GetPointData()->GetScalars())
+    {
+      ReadNrrdText(path, s); // VTK read text data as zeros
+    }
     img = PlaceNrrd(img, path);
   }
   if (auto* dicom = vtkDICOMImageReader::SafeDownCast(reader))

@@ -1,6 +1,8 @@
 #include "NrrdCheck.h"
 #include "Error.h"
 
+#include <vtkDataArray.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -149,5 +151,50 @@ void CheckNrrd(const std::string& path)
         std::to_string(std::max(0LL, have)),
       path);
   }
+}
+
+bool ReadNrrdText(const std::string& path, vtkDataArray* values)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::map<std::string, std::string> keys = ReadNrrdFields(in);
+  const std::string encoding = keys["encoding"];
+  if (encoding != "ascii" && encoding != "text" && encoding != "txt")
+  {
+    return false;
+  }
+  in.clear();
+  const std::string df = keys.count("data file") ? keys["data file"] : keys["datafile"];
+  std::ifstream detached;
+  std::istream* data = &in;
+  if (!df.empty())
+  {
+    detached.open(fs::path(df).is_absolute() ? fs::path(df) : fs::path(path).parent_path() / df, std::ios::binary);
+    if (!detached)
+    {
+      throw Error("cannot open data file '" + df + "' named in the header", path);
+    }
+    data = &detached;
+  }
+  std::string line;
+  for (long long k = std::atoll(keys["line skip"].c_str()); k > 0 && std::getline(*data, line); --k)
+  {
+  }
+  const vtkIdType n = values->GetNumberOfValues();
+  std::string word;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (!(*data >> word))
+    {
+      throw Error("text data holds " + std::to_string(i) + " values; the header's sizes need " + std::to_string(n), path);
+    }
+    char* end = nullptr;
+    const double v = std::strtod(word.c_str(), &end);
+    if (end == word.c_str() || *end != '\0')
+    {
+      throw Error("text data value " + std::to_string(i + 1) + " is not a number: '" + word + "'", path);
+    }
+    values->SetVariantValue(i, v);
+  }
+  return true;
 }
 } // namespace art

@@ -10,6 +10,8 @@
 #include <map>
 #include <string>
 
+class vtkDataArray;
+
 namespace art
 {
 /// The "key: value" fields of a NRRD header, read from `in` up to the first empty line (where
@@ -20,6 +22,12 @@ ADAPTIVERTIO_EXPORT std::map<std::string, std::string> ReadNrrdFields(std::istre
 /// A data file series (LIST or a pattern), which vtkNrrdReader segfaults on, is an error too.
 /// Compressed encodings and byte skip -1 are left to VTK.
 ADAPTIVERTIO_EXPORT void CheckNrrd(const std::string& path);
+
+/// For text data (encoding ascii, text or txt), which vtkNrrdReader (VTK 9.1) reads as all zeros:
+/// reads the values (attached, or in the "data file", after "line skip" lines) into `values`, in
+/// file order, and returns true; false for any other encoding. Too few values or a word that is
+/// not a number throw art::Error naming `path`.
+ADAPTIVERTIO_EXPORT bool ReadNrrdText(const std::string& path, vtkDataArray* values);
 } // namespace art
 
 #endif

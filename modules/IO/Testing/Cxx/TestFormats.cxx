@@ -507,6 +507,38 @@ TEST(Formats, NrrdNarrowFirstAxisAndSpaces)
   EXPECT_EQ(art::LoadVolume(Dir() + "/vectors.nrrd")->GetPointData()->GetScalars()->GetNumberOfComponents(), 4);
 }
 
+// NRRD text data (encoding ascii/text, as hand-made and teaching files hold it): vtkNrrdReader read
+// every voxel as 0 without a word. Attached and detached, with the values in file order.
+TEST(Formats, NrrdTextData)
+{
+  const std::string head = "NRRD0004\ntype: short\ndimension: 3\nsizes: 4 3 2\nencoding: ascii\n";
+  std::string values;
+  for (int v = 0; v < 24; ++v)
+  {
+    values += std::to_string(3 * v - 20) + (v % 5 == 4 ? "\n" : " ");
+  }
+  std::ofstream(Dir() + "/text.nrrd", std::ios::binary) << head << "\n" << values << "\n";
+  std::ofstream(Dir() + "/text.txt", std::ios::binary) << values;
+  std::ofstream(Dir() + "/text.nhdr", std::ios::binary) << head << "data file: text.txt\n";
+  for (const char* name : { "/text.nrrd", "/text.nhdr" })
+  {
+    auto img = art::LoadVolume(Dir() + name);
+    int d[3];
+    img->GetDimensions(d);
+    ASSERT_EQ(d[0] * 10 + d[1] * 100 + d[2] * 1000, 4 * 10 + 3 * 100 + 2 * 1000) << name;
+    vtkDataArray* s = img->GetPointData()->GetScalars();
+    ASSERT_EQ(s->GetNumberOfComponents(), 1) << name;
+    for (int v = 0; v < 24; ++v)
+    {
+      EXPECT_EQ(s->GetTuple1(v), 3 * v - 20) << name << " voxel " << v;
+    }
+  }
+  std::ofstream(Dir() + "/text-short.nrrd", std::ios::binary) << head << "\n1 2 3\n";
+  EXPECT_THROW(art::LoadVolume(Dir() + "/text-short.nrrd"), art::Error);
+  std::ofstream(Dir() + "/text-word.nrrd", std::ios::binary) << head << "\n1 2 x\n";
+  EXPECT_THROW(art::LoadVolume(Dir() + "/text-word.nrrd"), art::Error);
+}
+
 TEST(Formats, DicomSeriesFolder)
 {
   // tests/data/dicom: 4 slices of 16 x 12 cut from the default CT (tests/data/make_dicom.py).
