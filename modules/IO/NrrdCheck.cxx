@@ -4,6 +4,7 @@
 #include <vtkDataArray.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -95,6 +96,24 @@ void CheckNrrd(const std::string& path)
   }
   in.clear();
   const std::streamoff attachedStart = in.tellg();
+  {
+    // vtkNrrdReader makes the first of four axes the components. When the header puts that axis
+    // in space (a time series: kinds 'domain domain domain list', or a direction for it), the
+    // volume came out one axis short with the time steps as components.
+    std::istringstream ks(keys["kinds"]), ds(keys["space directions"]);
+    std::string first, dir;
+    ks >> first;
+    ds >> dir;
+    std::transform(first.begin(), first.end(), first.begin(), [](unsigned char c) { return std::tolower(c); });
+    const bool spatialFirst = first == "domain" || first == "space" || (first.empty() && !dir.empty() && dir != "none");
+    if (std::atoi(keys["dimension"].c_str()) > 3 && spatialFirst)
+    {
+      throw Error("a " + keys["dimension"] + "-D image whose first axis is in space (sizes " + keys["sizes"] +
+          (keys.count("kinds") ? ", kinds " + keys["kinds"] : "") +
+          "): only 3-D volumes are read; save one volume (a time step) as its own 3-D file (unu slice)",
+        path);
+    }
+  }
   const int esize = NrrdTypeSize(keys["type"]);
   const std::string encoding = keys["encoding"];
   const std::string series = keys.count("data file") ? keys["data file"] : keys["datafile"];

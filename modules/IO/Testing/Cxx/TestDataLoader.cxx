@@ -559,6 +559,25 @@ TEST(DataLoader, NrrdHeaderWithoutEnd)
   ExpectError(dir + "no-blank.nrrd", "the header has no blank line before its data");
 }
 
+// A 4-D NRRD whose first axis is in space (a time series) came out as a volume one axis short,
+// the time steps as its components; a first axis of vectors (diffusion data) stays the components.
+TEST(DataLoader, NrrdFourAxes)
+{
+  const std::string dir = std::string(ART_TEST_OUTPUT) + "/";
+  auto write = [&dir](const std::string& name, const std::string& sizes, const std::string& fields) {
+    std::ofstream(dir + name, std::ios::binary) << "NRRD0004\ntype: uchar\ndimension: 4\nsizes: " << sizes << "\n"
+                                                << fields << "encoding: raw\n\n" << std::string(120, 'x');
+    return dir + name;
+  };
+  ExpectError(write("time.nrrd", "5 4 3 2", "kinds: domain domain domain list\n"),
+    "a 4-D image whose first axis is in space (sizes 5 4 3 2, kinds domain domain domain list): only 3-D volumes are read");
+  ExpectError(write("time-dirs.nrrd", "5 4 3 2", "space: LPS\nspace directions: (1,0,0) (0,1,0) (0,0,1) none\n"),
+    "a 4-D image whose first axis is in space");
+  auto img = art::LoadVolume(write("vectors.nrrd", "2 5 4 3", "kinds: vector domain domain domain\n"));
+  EXPECT_EQ(img->GetPointData()->GetScalars()->GetNumberOfComponents(), 2);
+  EXPECT_EQ(img->GetNumberOfPoints(), 60);
+}
+
 // vtkNrrdReader reported raw data shorter than the header's sizes as "File operation failed:
 // 18446744073709305856, ext: ..."; the size is checked first, for attached and detached data.
 TEST(DataLoader, TruncatedNrrd)
