@@ -545,9 +545,25 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   img->GetDimensions(dims);
   if (dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0 || !img->GetPointData()->GetScalars())
   {
-    throw Error(fs::is_directory(path, ec) ? "folder holds no readable DICOM series"
-                                           : "holds no voxels (empty or unreadable volume)",
-      path);
+    if (fs::is_directory(path, ec))
+    {
+      throw Error("folder holds no readable DICOM series", path);
+    }
+    // Voxels without values said "holds no voxels (empty or unreadable volume)" too.
+    if (img->GetNumberOfPoints() > 0 && img->GetPointData()->GetNumberOfArrays() > 0)
+    {
+      throw Error("has no one-component point array to take as the voxels (point arrays: " +
+          ArrayNames({ img->GetPointData() }) + "; extract a component first)",
+        path);
+    }
+    if (img->GetNumberOfPoints() > 0)
+    {
+      vtkFieldData* fd = img->GetFieldData();
+      throw Error(std::string("has ") + std::to_string(img->GetNumberOfPoints()) + " voxels but no values on them" +
+          (fd && fd->GetNumberOfArrays() > 0 ? " (only field data: " + ArrayNames({ fd }) + ")" : ""),
+        path);
+    }
+    throw Error("holds no voxels (empty or unreadable volume)", path);
   }
   return img;
 }

@@ -469,6 +469,19 @@ TEST(DataLoader, MetaImageHeaderNumbers)
   EXPECT_EQ(art::LoadVolume(write("fine.mha", "DimSize = 2 2 2\n"))->GetNumberOfPoints(), 8);
 }
 
+// An image whose points carry no value to render said "holds no voxels (empty or unreadable
+// volume)": a legacy file with only field data, and one with only a vector array, say what they hold.
+TEST(DataLoader, VoxelsWithoutValues)
+{
+  const std::string dir = std::string(ART_TEST_OUTPUT) + "/";
+  const std::string head = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2 2 2\n"
+                           "ORIGIN 0 0 0\nSPACING 1 1 1\n";
+  std::ofstream(dir + "field-only.vtk") << head << "FIELD FieldData 1\ntime 1 1 float\n1.5\n";
+  ExpectError(dir + "field-only.vtk", "has 8 voxels but no values on them (only field data: time)");
+  std::ofstream(dir + "vectors-only.vtk") << head << "POINT_DATA 8\nVECTORS grad float\n" << "1 0 0 1 0 0 1 0 0 1 0 0 1 0 0 1 0 0 1 0 0 1 0 0\n";
+  ExpectError(dir + "vectors-only.vtk", "has no one-component point array to take as the voxels (point arrays: grad; extract a component first)");
+}
+
 // A 4-D MetaImage (a time series, as ITK and 3D Slicer write them): vtkMetaImageReader killed the
 // process with a heap corrupted ("double free or corruption"), even with a fourth axis of one sample.
 TEST(DataLoader, MetaImageFourAxes)
