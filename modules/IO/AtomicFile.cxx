@@ -119,7 +119,10 @@ AtomicFile::AtomicFile(std::string target)
   const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
   if (!fs::is_directory(dir, ec))
   {
-    throw Error("folder '" + dir.string() + "' does not exist", Dest);
+    // A file where the folder should be (out.png/x.png with out.png a file) is not a missing folder.
+    throw Error(fs::exists(dir, ec) ? "'" + dir.string() + "' is a file, not a folder"
+                                    : "folder '" + dir.string() + "' does not exist",
+      Dest);
   }
   if (fs::is_directory(p, ec))
   {

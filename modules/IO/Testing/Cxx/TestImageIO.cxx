@@ -169,6 +169,18 @@ TEST(ImageIO, ErrorsNameTheFile)
     EXPECT_NE(std::string(e.what()).find("/nonexistent-folder/x.png"), std::string::npos);
     EXPECT_NE(std::string(e.what()).find("does not exist"), std::string::npos);
   }
+  // A file where the folder should be was called a folder that does not exist.
+  const std::string plain = TempDir() + "/plain-file";
+  std::ofstream(plain) << "x";
+  try
+  {
+    art::WriteImage(Image(2, 2), plain + "/x.png");
+    FAIL() << "no error";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("plain-file' is a file, not a folder"), std::string::npos) << e.what();
+  }
   EXPECT_THROW(art::WriteImage(Image(2, 2), TempDir() + "/x.bmpx"), art::Error);
   EXPECT_THROW(art::ReadImage(TempDir() + "/missing.png"), art::Error);
   const std::string junk = TempDir() + "/junk.png";
