@@ -364,6 +364,10 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkErrorMacro("input must be a vtkUnstructuredGrid");
     return;
   }
+  if (grid->GetNumberOfCells() == 0)
+  {
+    return; // nothing to draw (a threshold that keeps nothing), as VTK's mappers draw nothing; no error each frame
+  }
   // The array the usual vtkAbstractVolumeMapper settings select (ScalarMode, SelectScalarArray).
   std::string key, error;
   vtkSmartPointer<vtkUnstructuredGrid> engineGrid = SelectedScalars(grid, this->ScalarMode,

@@ -2,7 +2,8 @@
 
 VTK's own unstructured-grid mappers drop both silently; the image must stay the same (the mapper
 does not follow them) and a warning must name each, once, however many frames are drawn. An
-unchanged default (gradient opacity 1 everywhere) is no news. Needs a display (skips with exit 77).
+unchanged default (gradient opacity 1 everywhere) is no news. An empty input (a threshold that
+keeps nothing) draws nothing without an error each frame. Needs a display (skips with exit 77).
 """
 import os
 import sys
@@ -14,7 +15,7 @@ if not os.environ.get("DISPLAY"):
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkUnstructuredGrid
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
                                          vtkVolumeProperty)
@@ -49,6 +50,7 @@ def on_warning(obj, event, text):
 
 
 mapper.AddObserver(vtkCommand.WarningEvent, on_warning)
+mapper.AddObserver(vtkCommand.ErrorEvent, on_warning)
 volume = vtkVolume()
 volume.SetMapper(mapper)
 volume.SetProperty(prop)
@@ -82,4 +84,10 @@ prop.SetGradientOpacity(ramp)
 got = frames(3)
 print(got[1:])
 assert len(got) == 2 and "gradient opacity" in got[1], got
+
+empty = vtkUnstructuredGrid()
+empty.SetPoints(tri.GetOutput().GetPoints())
+mapper.SetInputData(empty)
+got = frames(2)
+assert len(got) == 2, got  # no error for the empty grid
 print("ok")
