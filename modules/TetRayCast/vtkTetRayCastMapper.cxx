@@ -22,6 +22,7 @@
 #include <vtkPlane.h>
 #include <vtkPlaneCollection.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkRayCastImageDisplayHelper.h>
 #include <vtkCellData.h>
 #include <vtkRenderWindow.h>
@@ -96,10 +97,60 @@ std::vector<double> RayEndsFromDepth(
   return ends;
 }
 
-// Moves `cam` into the data's coordinates (the inverse of the volume's matrix): exact for
-// rotations, translations and uniform scales. False when the matrix scales its axes differently
-// (the parallel scale then takes their geometric mean).
-bool IntoData(vtkCamera* cam, vtkMatrix4x4* toWorld, vtkMatrix4x4* toData)
+// True when the linear part of `m` is a rotation (or mirror) times one scale: its columns are
+// orthogonal and of one length.
+bool IsSimilarity(vtkMatrix4x4* m)
+{
+  double c[3][3], len2[3];
+  for (int j = 0; j < 3; ++j)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      c[j][i] = m->GetElement(i, j);
+    }
+    len2[j] = c[j][0] * c[j][0] + c[j][1] * c[j][1] + c[j][2] * c[j][2];
+  }
+  const double lo = std::min(len2[0], std::min(len2[1], len2[2])), hi = std::max(len2[0], std::max(len2[1], len2[2]));
+  if (!(lo > 0) || hi > lo * (1 + 2e-6))
+  {
+    return false;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    const int b = (a + 1) % 3;
+    if (std::fabs(c[a][0] * c[b][0] + c[a][1] * c[b][1] + c[a][2] * c[b][2]) > 1e-6 * hi)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// grid with its points taken through `m` (the volume's matrix when it is no similarity): the
+// engine then casts in world coordinates.
+vtkSmartPointer<vtkUnstructuredGrid> Transformed(vtkUnstructuredGrid* grid, vtkMatrix4x4* m)
+{
+  auto pts = vtkSmartPointer<vtkPoints>::New();
+  pts->SetDataTypeToDouble();
+  pts->SetNumberOfPoints(grid->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    double p[4] = { 0, 0, 0, 1 }, q[4];
+    grid->GetPoint(i, p);
+    m->MultiplyPoint(p, q);
+    pts->SetPoint(i, q[0] / q[3], q[1] / q[3], q[2] / q[3]);
+  }
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->CopyStructure(grid);
+  out->SetPoints(pts);
+  out->GetPointData()->PassData(grid->GetPointData());
+  out->GetCellData()->PassData(grid->GetCellData());
+  return out;
+}
+
+// Moves `cam` into the data's coordinates (the inverse of the volume's matrix, a similarity:
+// IsSimilarity), its parallel scale divided by the matrix's scale.
+void IntoData(vtkCamera* cam, vtkMatrix4x4* toWorld, vtkMatrix4x4* toData)
 {
   double pos[4], fp[4], up[3], q[4];
   cam->GetPosition(pos);
@@ -121,8 +172,6 @@ bool IntoData(vtkCamera* cam, vtkMatrix4x4* toWorld, vtkMatrix4x4* toData)
       toWorld->GetElement(1, c) * toWorld->GetElement(1, c) + toWorld->GetElement(2, c) * toWorld->GetElement(2, c));
   }
   cam->SetParallelScale(cam->GetParallelScale() / std::cbrt(len[0] * len[1] * len[2]));
-  const double lo = std::min(len[0], std::min(len[1], len[2])), hi = std::max(len[0], std::max(len[1], len[2]));
-  return hi <= lo * (1 + 1e-6);
 }
 
 // Depth of the image's quad: the nearest corner of the data's bounds `b`, as VTK's ray cast
@@ -377,10 +426,29 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkErrorMacro(<< error);
     return;
   }
+  // Rays are cast in the data's own coordinates when the volume's matrix is a similarity (the
+  // camera goes through its inverse; segment lengths, and so the opacity unit distance, are
+  // measured in data units). Any other matrix (an anisotropic scale such as SetScale(1, 1, 3) for
+  // thick slices, or a shear) moves the mesh's points into the world instead, rebuilt when the
+  // matrix changes, and lengths are world lengths.
   vtkMatrix4x4* toWorld = vol->GetMatrix();
+  vtkNew<vtkMatrix4x4> engineToWorld;
+  const bool similar = IsSimilarity(toWorld);
+  if (similar)
+  {
+    engineToWorld->DeepCopy(toWorld);
+  }
+  else
+  {
+    key += " world";
+    for (int i = 0; i < 16; ++i)
+    {
+      key += " " + std::to_string(toWorld->GetElement(i / 4, i % 4));
+    }
+  }
   vtkNew<vtkMatrix4x4> toData;
-  vtkMatrix4x4::Invert(toWorld, toData);
-  const std::vector<std::array<double, 4>> planes = PlanesInData(this->ClippingPlanes, toWorld);
+  vtkMatrix4x4::Invert(engineToWorld, toData);
+  const std::vector<std::array<double, 4>> planes = PlanesInData(this->ClippingPlanes, engineToWorld);
   for (const auto& pl : planes)
   {
     key += " clip " + std::to_string(pl[0]) + "," + std::to_string(pl[1]) + "," + std::to_string(pl[2]) + "," +
@@ -395,6 +463,10 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       std::string note;
       this->Impl->Caster.reset();
       this->Impl->Mesh.reset();
+      if (!similar)
+      {
+        engineGrid = Transformed(engineGrid, toWorld);
+      }
       if (!planes.empty())
       {
         engineGrid = Clipped(engineGrid, planes);
@@ -453,15 +525,11 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const int vw = std::max(1, size[0]), vh = std::max(1, size[1]);
   const int w = std::max(1, static_cast<int>(vw / this->ImageSampleDistance + 0.5));
   const int h = std::max(1, static_cast<int>(vh / this->ImageSampleDistance + 0.5));
-  // Rays are cast in the data's own coordinates: the camera goes through the inverse of the
-  // volume's matrix (exact for rotations, translations and uniform scales; segment lengths, and
-  // so the opacity unit distance, are measured in data units).
   vtkNew<vtkCamera> local;
   local->DeepCopy(ren->GetActiveCamera());
-  if (!toWorld->IsIdentity() && !IntoData(local, toWorld, toData) && !this->WarnedNonUniform)
+  if (!engineToWorld->IsIdentity())
   {
-    this->WarnedNonUniform = true;
-    vtkWarningMacro("the vtkVolume's matrix scales its axes differently; rays are cast as if it were uniform");
+    IntoData(local, engineToWorld, toData);
   }
   const art::Camera cam = art::Camera::FromVTK(local, w, h);
   std::vector<double> ends;

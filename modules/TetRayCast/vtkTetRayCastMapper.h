@@ -9,8 +9,9 @@
  * vertex gradients, and rays stop at the early-termination opacity. The image is computed on all
  * cores at the renderer's size divided by ImageSampleDistance and drawn as a textured quad, like
  * VTK's own ray cast mappers. Non-tetrahedral cells are tetrahedralised first. The volume's
- * matrix (position, orientation, uniform scale) is honoured by casting in the data's coordinates;
- * an anisotropic scale is approximated (with a warning). Opaque geometry in the scene ends the
+ * matrix is honoured: position, orientation and a uniform scale by casting in the data's
+ * coordinates (lengths in data units), any other matrix (SetScale(1, 1, 3) for thick slices, a
+ * shear) by moving the mesh into the world, rebuilt when it changes. Opaque geometry in the scene ends the
  * rays at its depth (IntermixIntersectingGeometry). The mapper's ScalarMode and SelectScalarArray
  * choose the field (cell values are averaged to the points). Clipping planes (AddClippingPlane,
  * world coordinates, the side the normal points to kept) cut the mesh itself, exact for its linear
@@ -112,7 +113,6 @@ protected:
   vtkTypeBool IntermixIntersectingGeometry = 1;
   double LastRenderTime = 0.0;
   double LastTetsCrossed = 0.0;
-  bool WarnedNonUniform = false;
   int Warned = 0; ///< unsupported property settings already named: 1 shading, 2 gradient opacity
 
   /** Warns, once each, of property settings the mapper does not follow (shading, gradient opacity). */
