@@ -1,6 +1,8 @@
 #include "MetaImageCheck.h"
 #include "Error.h"
 
+#include <vtk_zlib.h>
+
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -178,6 +180,54 @@ void CheckFileSeries(const std::string& path, const std::string& edf, std::strea
       path);
   }
 }
+// Compressed data (zlib) must inflate to exactly the voxels' bytes: vtkMetaImageReader read data
+// that is not zlib as zeros, and data inflating short left the rest of the image uninitialised.
+void CheckInflatedSize(const std::string& dataFile, std::streamoff offset, long long packed, long long need,
+  const std::string& path)
+{
+  std::ifstream in(dataFile, std::ios::binary);
+  in.seekg(offset);
+  z_stream z{};
+  if (inflateInit(&z) != Z_OK)
+  {
+    return;
+  }
+  std::vector<unsigned char> src(1 << 16), dst(1 << 16);
+  long long left = packed, out = 0;
+  int rc = Z_OK;
+  while (rc == Z_OK && left > 0 && in)
+  {
+    in.read(reinterpret_cast<char*>(src.data()), static_cast<std::streamsize>(std::min<long long>(left, src.size())));
+    const std::streamsize got = in.gcount();
+    left -= got;
+    z.next_in = src.data();
+    z.avail_in = static_cast<uInt>(got);
+    do
+    {
+      z.next_out = dst.data();
+      z.avail_out = static_cast<uInt>(dst.size());
+      rc = inflate(&z, Z_NO_FLUSH);
+      out += static_cast<long long>(dst.size() - z.avail_out);
+    } while (rc == Z_OK && z.avail_out == 0);
+    if (got == 0)
+    {
+      break;
+    }
+  }
+  inflateEnd(&z);
+  if (rc != Z_STREAM_END && rc != Z_OK)
+  {
+    throw Error("the compressed data is not readable zlib data (" + std::string(rc == Z_DATA_ERROR ? "corrupt" : "broken") +
+        " after " + std::to_string(out) + " bytes)",
+      path);
+  }
+  if (out != need)
+  {
+    throw Error("the compressed data inflates to " + std::to_string(out) + " bytes; the header's DimSize and "
+                "ElementType need " + std::to_string(need),
+      path);
+  }
+}
 } // namespace
 
 void CheckMetaImage(const std::string& path)
@@ -256,7 +306,23 @@ void CheckMetaImage(const std::string& path)
   long long need = static_cast<long long>(count) * esize * channels;
   if (compressed)
   {
-    need = Integer(keys, "CompressedDataSize", 1, path);
+    if (!keys.count("CompressedDataSize") && dataFile == path)
+    {
+      // Data in the header's own file: vtkMetaImageReader then read every voxel as 0 without a
+      // word (from a data file of its own it takes the file's size).
+      throw Error("compressed data without CompressedDataSize, which VTK's MetaImage reader reads as zeros: add "
+                  "'CompressedDataSize = " + std::to_string(std::max(0LL, have)) + "' to the header",
+        path);
+    }
+    const long long packed = keys.count("CompressedDataSize") ? Integer(keys, "CompressedDataSize", 1, path) : have;
+    if (have < packed)
+    {
+      throw Error("truncated: header promises " + std::to_string(packed) + " data bytes, file holds " +
+          std::to_string(std::max(0LL, have)),
+        path);
+    }
+    CheckInflatedSize(dataFile, offset, packed, need, path);
+    return;
   }
   if (have < need)
   {
