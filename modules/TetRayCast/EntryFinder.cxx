@@ -150,10 +150,10 @@ bool EntryFinder::Empty(int x0, int y0, int x1, int y1) const
   return true;
 }
 
-bool EntryFinder::Test(const TetWalker& w, const Ray& r, int b, Entry& e) const
+bool EntryFinder::Test(const TetWalker& w, const ProjectedWalker* pw, const Ray& r, int b, Entry& e) const
 {
   const auto& bf = F[b];
-  if (!w.Crosses(bf[0], bf[1], -1, e.x) || e.x.t < r.tmin)
+  if (!(pw ? pw->Crosses(bf[0], bf[1], -1, e.x) : w.Crosses(bf[0], bf[1], -1, e.x)) || e.x.t < r.tmin)
   {
     return false;
   }
@@ -162,7 +162,7 @@ bool EntryFinder::Test(const TetWalker& w, const Ray& r, int b, Entry& e) const
 }
 
 void EntryFinder::Find(const TetWalker& w, const Ray& r, int px, int py, bool all,
-  std::vector<Entry>& out, int& hint, Counters& c) const
+  std::vector<Entry>& out, int& hint, Counters& c, const ProjectedWalker* pw) const
 {
   out.clear();
   Entry e;
@@ -170,14 +170,14 @@ void EntryFinder::Find(const TetWalker& w, const Ray& r, int px, int py, bool al
   if (!all && hint >= 0)
   {
     // Coherence: the previous ray's entry face, then one step of the walk over its neighbours.
-    if (Test(w, r, hint, e))
+    if (Test(w, pw, r, hint, e))
     {
       out.push_back(e);
       return;
     }
     for (int n : M.BoundaryAdjacency(hint))
     {
-      if (n >= 0 && Test(w, r, n, e))
+      if (n >= 0 && Test(w, pw, r, n, e))
       {
         out.push_back(e);
         hint = n;
@@ -200,7 +200,7 @@ void EntryFinder::Find(const TetWalker& w, const Ray& r, int px, int py, bool al
           continue;
         }
       }
-      if (Test(w, r, *f, e))
+      if (Test(w, pw, r, *f, e))
       {
         out.push_back(e);
         if (!all)

@@ -12,6 +12,7 @@
 #include "Camera.h"
 #include "Counters.h"
 #include "TetMesh.h"
+#include "ProjectedWalker.h"
 #include "TetWalker.h"
 
 #include <vector>
@@ -37,8 +38,9 @@ public:
   /// The entry crossings of ray r (through pixel px, py when bucketed), sorted by t, with
   /// t >= r.tmin. `all` asks for every one (non-convex); otherwise the first one found suffices
   /// (convex). `hint` is the previous ray's entry face, updated (-1: none).
+  /// `pw`, when given (a camera ray in a valid ProjectedView), tests the faces in 2-D.
   void Find(const TetWalker& w, const Ray& r, int px, int py, bool all, std::vector<Entry>& out,
-    int& hint, Counters& c) const;
+    int& hint, Counters& c, const ProjectedWalker* pw = nullptr) const;
 
   /// True when no ray through the pixels [x0, x1) x [y0, y1) can find an entry: their buckets
   /// are empty and no face is tested by every ray.
@@ -48,7 +50,7 @@ public:
   std::size_t GlobalCount() const { return Global.size(); }
 
 private:
-  bool Test(const TetWalker& w, const Ray& r, int b, Entry& e) const;
+  bool Test(const TetWalker& w, const ProjectedWalker* pw, const Ray& r, int b, Entry& e) const;
 
   const TetMesh& M;
   const std::vector<std::array<int, 2>>& F; ///< the faces entered through

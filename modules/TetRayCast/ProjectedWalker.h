@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace art
@@ -102,6 +103,22 @@ public:
     std::uint64_t& steps, std::uint64_t& nudges, const std::array<int, 4>* links = nullptr) const
   {
     WalkFaces(M, *this, t, entryFace, in, visit, out, steps, nudges, links);
+  }
+
+  /// As TetWalker::Crosses, with the walk's 2-D products: an entry found here is the one the walk
+  /// itself would take (and costs a fifth of the 3-D test).
+  bool Crosses(int t, int f, int sense, FaceCrossing& x) const
+  {
+    const auto& v = M.Tet(t);
+    const int* fv = TetMesh::FaceVertex[f];
+    const Corner a = MakeCorner(v[fv[0]]), b = MakeCorner(v[fv[1]]), c = MakeCorner(v[fv[2]]);
+    const double s01 = sense * Side(a, b), s12 = sense * Side(b, c), s20 = sense * Side(c, a);
+    if (s01 < 0 || s12 < 0 || s20 < 0 || !(s01 + s12 + s20 > 0))
+    {
+      return false;
+    }
+    Exit(a, b, c, s12, s20, s01, -std::numeric_limits<double>::infinity(), x);
+    return true;
   }
 
   // The walk's geometry (see TetWalker).

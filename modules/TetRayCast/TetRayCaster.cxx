@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #if defined(__GNUC__)
 #define ART_ALWAYS_INLINE __attribute__((always_inline))
@@ -215,12 +216,13 @@ struct TetRayCaster::Impl
   }
 
   static void Entries(const TetRayCaster& rc, const EntryFinder& f, const TetWalker& w, const Ray& r,
-    int px, int py, std::vector<Entry>& out, int& hint, Counters& c, bool region = false)
+    int px, int py, std::vector<Entry>& out, int& hint, Counters& c, bool region = false,
+    const ProjectedWalker* pw = nullptr)
   {
     const bool convex = rc.M.IsConvex();
     if (region || convex || !rc.Boundary || !rc.S.boundaryGrid)
     {
-      f.Find(w, r, px, py, !convex, out, hint, c);
+      f.Find(w, r, px, py, !convex, out, hint, c, pw);
       return;
     }
     // Non-convex: every boundary face in the TriangleGrid's voxels along the ray gets the exact
@@ -320,16 +322,21 @@ struct TetRayCaster::Impl
               r.tmin = std::min(l0, r.tmin) - 1e-6 * (l1 - l0); // the box's faces a margin inside
             }
             const TetWalker w(rc.M, r);
-            Entries(rc, *finder, w, r, x, y, entries, hint, c, region);
+            std::optional<ProjectedWalker> pw;
+            if (view && view->Fits(r))
+            {
+              pw.emplace(*view, r);
+            }
+            Entries(rc, *finder, w, r, x, y, entries, hint, c, region, pw ? &*pw : nullptr);
             if (entries.empty() && start < 0)
             {
               continue;
             }
             ++c.hits;
             RayResult res;
-            if (view && view->Fits(r))
+            if (pw)
             {
-              Trace(rc, rule, w, ProjectedWalker(*view, r), r, start, entries, res, c, nd, region, from);
+              Trace(rc, rule, w, *pw, r, start, entries, res, c, nd, region, from);
             }
             else
             {
