@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -136,6 +137,14 @@ AtomicFile::AtomicFile(std::string target)
   Temp = (dir / ("." + p.filename().string() + ".tmp" + std::to_string(getpid()) + "-" +
             std::to_string(serial++) + ext))
            .string();
+  // Created here, so that a folder no file can be made in (read-only file system, root in /proc)
+  // says why: VTK's image writers reported it as "OutOfDiskSpaceError".
+  const int fd = ::open(Temp.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0666);
+  if (fd < 0)
+  {
+    throw Error("cannot create a file in folder '" + dir.string() + "': " + std::strerror(errno), Dest);
+  }
+  ::close(fd);
   InstallHandlersOnce();
   Slot = RegisterLive(Temp);
 }
