@@ -56,8 +56,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <new>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -406,6 +408,44 @@ void MakeSpacingPositive(vtkImageData* img, const std::string& path)
 }
 } // namespace
 
+// A time series (a ParaView .pvd collection, as ParaView, FEniCS, deal.II and foamToVTK write
+// them, or a .series JSON file) said "unknown file type". One step is one file the tools read:
+// the error names the first.
+namespace
+{
+[[noreturn]] void TimeSeriesError(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const bool pvd = LowerExtension(path) == ".pvd";
+  const std::regex entry(pvd ? R"re(<DataSet\b[^>]*>)re" : R"re(\{[^{}]*"name"[^{}]*\})re");
+  const std::regex name(pvd ? R"re(\bfile\s*=\s*"([^"]*)")re" : R"re("name"\s*:\s*"([^"]*)")re");
+  const std::regex time(pvd ? R"re(\btimestep\s*=\s*"([^"]*)")re" : R"re("time"\s*:\s*([-+0-9.eE]+))re");
+  std::vector<std::pair<std::string, std::string>> steps; // file, time
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), entry); it != std::sregex_iterator(); ++it)
+  {
+    const std::string item = it->str();
+    std::smatch f, t;
+    if (std::regex_search(item, f, name))
+    {
+      steps.emplace_back(f[1].str(), std::regex_search(item, t, time) ? t[1].str() : std::string());
+    }
+  }
+  if (steps.empty())
+  {
+    throw Error(std::string("is a time series (") + (pvd ? "ParaView .pvd collection" : ".series file") +
+        ") that names no data files",
+      path);
+  }
+  const fs::path first = fs::path(steps[0].first).is_absolute() ? fs::path(steps[0].first)
+                                                                 : fs::path(path).parent_path() / steps[0].first;
+  throw Error(std::string("is a time series of ") + std::to_string(steps.size()) + " data files (" +
+      (pvd ? "ParaView .pvd collection" : ".series file") + "), which the tools do not step through: give one of its files, e.g. '" +
+      first.string() + "'" + (steps[0].second.empty() ? "" : " (time " + steps[0].second + ")"),
+    path);
+}
+} // namespace
+
 const char* KindName(DataKind k)
 {
   switch (k)
@@ -447,6 +487,10 @@ DataKind KindOf(const std::string& path)
   if (e == ".vtk")
   {
     return LegacyKind(path);
+  }
+  if (e == ".pvd" || e == ".series")
+  {
+    TimeSeriesError(path);
   }
   throw Error("unknown file type '" + (e.empty() ? std::string("(none)") : e) +
       "' (volumes: .mha .mhd .nii .nii.gz .vti .pvti .nrrd or a DICOM folder; surfaces: .ply .obj "

@@ -534,6 +534,24 @@ TEST(DataLoader, MetaImageCompressedData)
   EXPECT_EQ(art::LoadVolume(dir + "own.mhd")->GetPointData()->GetScalars()->GetRange()[1], 50);
 }
 
+// A time series (ParaView's .pvd collection, a .series file) said "unknown file type '.pvd'"; the
+// error now says what it is and names its first file.
+TEST(DataLoader, TimeSeriesNamesItsFirstFile)
+{
+  const std::string dir = std::string(ART_TEST_OUTPUT) + "/";
+  std::ofstream(dir + "run.pvd") << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+                                    "<Collection>\n<DataSet timestep=\"0.25\" group=\"\" part=\"0\" file=\"run/step_0.vtu\"/>\n"
+                                    "<DataSet timestep=\"0.5\" part=\"0\" file=\"run/step_1.vtu\"/>\n</Collection>\n</VTKFile>\n";
+  ExpectError(dir + "run.pvd", "is a time series of 2 data files (ParaView .pvd collection), which the tools do not "
+                               "step through: give one of its files, e.g. '" + dir + "run/step_0.vtu' (time 0.25)");
+  std::ofstream(dir + "run.vtu.series") << R"({ "file-series-version" : "1.0", "files" : [ { "name" : "a.vtu", "time" : 0 }, )"
+                                        << R"({ "name" : "b.vtu", "time" : 1.5 } ] })";
+  ExpectError(dir + "run.vtu.series", "is a time series of 2 data files (.series file), which the tools do not step "
+                                      "through: give one of its files, e.g. '" + dir + "a.vtu' (time 0)");
+  std::ofstream(dir + "none.pvd") << "<VTKFile type=\"Collection\"><Collection></Collection></VTKFile>\n";
+  ExpectError(dir + "none.pvd", "is a time series (ParaView .pvd collection) that names no data files");
+}
+
 // A 4-D MetaImage (a time series, as ITK and 3D Slicer write them): vtkMetaImageReader killed the
 // process with a heap corrupted ("double free or corruption"), even with a fourth axis of one sample.
 TEST(DataLoader, MetaImageFourAxes)
