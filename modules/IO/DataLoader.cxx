@@ -21,6 +21,7 @@
 #include <vtkDICOMImageReader.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkDataSetReader.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
@@ -780,12 +781,21 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)
     toUG->Update();
     ug = toUG->GetOutput();
   }
-  if (ug->GetNumberOfCells() == 0)
+  auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  copy->ShallowCopy(ug);
+  if (copy->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
+  {
+    // Pieces saved from a parallel run with ghost levels repeat their neighbours' boundary cells,
+    // marked in vtkGhostType: appended, the copies overlapped and the mesh was refused
+    // ("inconsistent neighbours ... (overlap)"). Each cell is kept once, where it is not a ghost,
+    // and the marks go (a mesh without point scalars took them as its cell scalars).
+    copy->RemoveGhostCells();
+    copy->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+  }
+  if (copy->GetNumberOfCells() == 0)
   {
     throw Error("holds no cells (empty or unreadable mesh)", path);
   }
-  auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  copy->ShallowCopy(ug);
   return copy;
 }
 

@@ -14,7 +14,11 @@
 #include <vtkPolyData.h>
 #include <vtkPoints.h>
 #include <vtkFloatArray.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnsignedShortArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+#include <vtkDataSetAttributes.h>
 
 #include <gtest/gtest.h>
 
@@ -532,6 +536,60 @@ TEST(DataLoader, MetaImageCompressedData)
   own.replace(own.find("LOCAL"), 5, "own.zraw");
   std::ofstream(dir + "own.mhd", std::ios::binary) << own;
   EXPECT_EQ(art::LoadVolume(dir + "own.mhd")->GetPointData()->GetScalars()->GetRange()[1], 50);
+}
+
+// Pieces saved from a parallel run with ghost levels repeat their neighbours' boundary cells,
+// marked DUPLICATECELL in vtkGhostType: appended whole, the copies overlapped and the mesh was
+// refused. Two pieces of a row of unit hexahedra, each with one ghost of the other's, read as the
+// row once, without the marks.
+TEST(DataLoader, ParallelPiecesDropTheirGhostCells)
+{
+  const std::string dir = std::string(ART_TEST_OUTPUT) + "/ghosts/";
+  std::filesystem::create_directories(dir);
+  auto piece = [&dir](const std::string& name, int first, int cells, int ghost) {
+    vtkNew<vtkPoints> pts;
+    vtkNew<vtkFloatArray> x;
+    x->SetName("x");
+    for (int i = first; i <= first + cells; ++i)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        pts->InsertNextPoint(i, k & 1, k >> 1);
+        x->InsertNextValue(static_cast<float>(i));
+      }
+    }
+    vtkNew<vtkUnstructuredGrid> g;
+    g->SetPoints(pts);
+    g->GetPointData()->SetScalars(x);
+    vtkNew<vtkUnsignedCharArray> marks;
+    marks->SetName(vtkDataSetAttributes::GhostArrayName());
+    for (int c = 0; c < cells; ++c)
+    {
+      const vtkIdType a = 4 * c, b = 4 * (c + 1);
+      const vtkIdType hex[8] = { a, b, b + 1, a + 1, a + 2, b + 2, b + 3, a + 3 };
+      g->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
+      marks->InsertNextValue(first + c == ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
+    }
+    g->GetCellData()->AddArray(marks);
+    vtkNew<vtkXMLUnstructuredGridWriter> w;
+    w->SetInputData(g);
+    w->SetFileName((dir + name).c_str());
+    ASSERT_TRUE(w->Write());
+  };
+  piece("p0.vtu", 0, 3, 2); // cells 0, 1 and a ghost of 2
+  piece("p1.vtu", 1, 3, 1); // a ghost of 1, cells 2, 3
+  std::ofstream(dir + "run.pvtu") << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\">\n"
+                                     "<PUnstructuredGrid GhostLevel=\"1\">\n<PPointData Scalars=\"x\"><PDataArray type=\"Float32\" "
+                                     "Name=\"x\"/></PPointData>\n<PCellData><PDataArray type=\"UInt8\" Name=\"vtkGhostType\"/>"
+                                     "</PCellData>\n<PPoints><PDataArray type=\"Float32\" NumberOfComponents=\"3\"/></PPoints>\n"
+                                     "<Piece Source=\"p0.vtu\"/>\n<Piece Source=\"p1.vtu\"/>\n</PUnstructuredGrid>\n</VTKFile>\n";
+  auto mesh = art::LoadMesh(dir + "run.pvtu");
+  ASSERT_EQ(mesh->GetNumberOfCells(), 4);
+  EXPECT_EQ(mesh->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()), nullptr);
+  double b[6];
+  mesh->GetBounds(b);
+  EXPECT_EQ(b[0], 0);
+  EXPECT_EQ(b[1], 4);
 }
 
 // A time series (ParaView's .pvd collection, a .series file) said "unknown file type '.pvd'"; the
