@@ -11,6 +11,7 @@
 #include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
@@ -259,6 +260,24 @@ vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(
   key = std::to_string(mode) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(a));
   return view;
 }
+// engineGrid (grid, or a view sharing its cells) without the cells grid marks as ghosts
+// (DUPLICATECELL in vtkGhostType: a parallel piece's copies of its neighbours' cells, drawn by
+// their own piece, as VTK's mappers skip them) and without the marks (never taken as scalars).
+vtkSmartPointer<vtkUnstructuredGrid> WithoutGhosts(vtkUnstructuredGrid* engineGrid, vtkUnstructuredGrid* grid)
+{
+  vtkDataArray* marks = grid->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+  if (!marks)
+  {
+    return engineGrid;
+  }
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->ShallowCopy(engineGrid);
+  out->GetCellData()->AddArray(marks);
+  out->RemoveGhostCells();
+  out->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+  return out;
+}
+
 // The mapper's clipping planes (world coordinates, keeping the side their normal points to, as
 // VTK's mappers do) in the data's coordinates: (a, b, c, d) with a x + b y + c z + d >= 0 kept.
 std::vector<std::array<double, 4>> PlanesInData(vtkPlaneCollection* planes, vtkMatrix4x4* toWorld)
@@ -463,6 +482,11 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       std::string note;
       this->Impl->Caster.reset();
       this->Impl->Mesh.reset();
+      engineGrid = WithoutGhosts(engineGrid, grid);
+      if (engineGrid->GetNumberOfCells() == 0)
+      {
+        return; // only ghosts: their own pieces draw them
+      }
       if (!similar)
       {
         engineGrid = Transformed(engineGrid, toWorld);

@@ -13,7 +13,8 @@
  * coordinates (lengths in data units), any other matrix (SetScale(1, 1, 3) for thick slices, a
  * shear) by moving the mesh into the world, rebuilt when it changes. Opaque geometry in the scene ends the
  * rays at its depth (IntermixIntersectingGeometry). The mapper's ScalarMode and SelectScalarArray
- * choose the field (cell values are averaged to the points). Clipping planes (AddClippingPlane,
+ * choose the field (cell values are averaged to the points); ghost cells (DUPLICATECELL in
+ * vtkGhostType) are skipped, as VTK's mappers skip them. Clipping planes (AddClippingPlane,
  * world coordinates, the side the normal points to kept) cut the mesh itself, exact for its linear
  * field; moving a plane rebuilds the mesh. As VTK's own volume mappers, each frame fires
  * VolumeMapperRenderStartEvent, VolumeMapperRenderProgressEvent (call data: a double in [0, 1],
