@@ -12,7 +12,8 @@
  * "max_error", and field data rms_error, max_error, tets, vertices, build_seconds,
  * target_tets, target_error and source_spacing (the input's mean voxel spacing, which a
  * transfer-function preset's opacity unit distance follows). Output port 1: a vtkMultiBlockDataSet holding one such grid per
- * level added with AddLevel (a nested series from one run, coarsest first) and the final grid.
+ * level added with AddLevel (a nested series from one run, coarsest first) and the final grid
+ * (GetOutputDataObject(1); GetOutput(1) casts it to a grid and gives null, from Python None).
  *
  * The reduced array is the point scalars, or the one given with SetInputArrayToProcess(0, 0, 0,
  * vtkDataObject::FIELD_ASSOCIATION_POINTS, name). Values on the cells (the cell scalars of an image
