@@ -98,9 +98,9 @@ std::vector<double> RayEndsFromDepth(
   return ends;
 }
 
-// True when the linear part of `m` is a rotation (or mirror) times one scale: its columns are
-// orthogonal and of one length.
-bool IsSimilarity(vtkMatrix4x4* m)
+// The scale of `m` when its linear part is a rotation or mirror times one scale (orthogonal
+// columns of one length), else 0.
+double SimilarityScale(vtkMatrix4x4* m)
 {
   double c[3][3], len2[3];
   for (int j = 0; j < 3; ++j)
@@ -114,21 +114,21 @@ bool IsSimilarity(vtkMatrix4x4* m)
   const double lo = std::min(len2[0], std::min(len2[1], len2[2])), hi = std::max(len2[0], std::max(len2[1], len2[2]));
   if (!(lo > 0) || hi > lo * (1 + 2e-6))
   {
-    return false;
+    return 0.0;
   }
   for (int a = 0; a < 3; ++a)
   {
     const int b = (a + 1) % 3;
     if (std::fabs(c[a][0] * c[b][0] + c[a][1] * c[b][1] + c[a][2] * c[b][2]) > 1e-6 * hi)
     {
-      return false;
+      return 0.0;
     }
   }
-  return true;
+  return std::sqrt(std::cbrt(len2[0] * len2[1] * len2[2]));
 }
 
-// grid with its points taken through `m` (the volume's matrix when it is no similarity): the
-// engine then casts in world coordinates.
+// grid with its points taken through `m` (the volume's matrix, or a mirror's divided by its scale),
+// into the coordinates the engine casts in.
 vtkSmartPointer<vtkUnstructuredGrid> Transformed(vtkUnstructuredGrid* grid, vtkMatrix4x4* m)
 {
   auto pts = vtkSmartPointer<vtkPoints>::New();
@@ -149,8 +149,8 @@ vtkSmartPointer<vtkUnstructuredGrid> Transformed(vtkUnstructuredGrid* grid, vtkM
   return out;
 }
 
-// Moves `cam` into the data's coordinates (the inverse of the volume's matrix, a similarity:
-// IsSimilarity), its parallel scale divided by the matrix's scale.
+// Moves `cam` into the data's coordinates (the inverse of the volume's matrix, a rotation times
+// one scale: SimilarityScale), its parallel scale divided by the matrix's scale.
 void IntoData(vtkCamera* cam, vtkMatrix4x4* toWorld, vtkMatrix4x4* toData)
 {
   double pos[4], fp[4], up[3], q[4];
@@ -445,20 +445,35 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkErrorMacro(<< error);
     return;
   }
-  // Rays are cast in the data's own coordinates when the volume's matrix is a similarity (the
-  // camera goes through its inverse; segment lengths, and so the opacity unit distance, are
-  // measured in data units). Any other matrix (an anisotropic scale such as SetScale(1, 1, 3) for
-  // thick slices, or a shear) moves the mesh's points into the world instead, rebuilt when the
-  // matrix changes, and lengths are world lengths.
+  // Rays are cast in the data's own coordinates when the volume's matrix is a rotation times one
+  // scale (the camera goes through its inverse; segment lengths, and so the opacity unit
+  // distance, are measured in data units). Any other matrix moves the mesh's points into the
+  // world instead, rebuilt when the matrix changes: a mirror (a negative scale: the camera moved
+  // through it sees right and left swapped, and the volume was drawn on the wrong side of the
+  // view) divided by its scale, so lengths stay in data units; an anisotropic scale (SetScale(1,
+  // 1, 3) for thick slices) or a shear as it is, lengths in world units.
   vtkMatrix4x4* toWorld = vol->GetMatrix();
-  vtkNew<vtkMatrix4x4> engineToWorld;
-  const bool similar = IsSimilarity(toWorld);
+  vtkNew<vtkMatrix4x4> engineToWorld, meshToEngine; // the engine's mesh is meshToEngine * data
+  const double scale = SimilarityScale(toWorld);
+  const bool similar = scale > 0 && toWorld->Determinant() > 0;
   if (similar)
   {
     engineToWorld->DeepCopy(toWorld);
   }
   else
   {
+    meshToEngine->DeepCopy(toWorld);
+    if (scale > 0)
+    {
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 4; ++c)
+        {
+          meshToEngine->SetElement(r, c, toWorld->GetElement(r, c) / scale);
+        }
+        engineToWorld->SetElement(r, r, scale);
+      }
+    }
     key += " world";
     for (int i = 0; i < 16; ++i)
     {
@@ -489,7 +504,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       }
       if (!similar)
       {
-        engineGrid = Transformed(engineGrid, toWorld);
+        engineGrid = Transformed(engineGrid, meshToEngine);
       }
       if (!planes.empty())
       {

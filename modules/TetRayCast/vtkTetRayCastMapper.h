@@ -10,8 +10,10 @@
  * cores at the renderer's size divided by ImageSampleDistance and drawn as a textured quad, like
  * VTK's own ray cast mappers. Non-tetrahedral cells are tetrahedralised first. The volume's
  * matrix is honoured: position, orientation and a uniform scale by casting in the data's
- * coordinates (lengths in data units), any other matrix (SetScale(1, 1, 3) for thick slices, a
- * shear) by moving the mesh into the world, rebuilt when it changes. Opaque geometry in the scene ends the
+ * coordinates (lengths in data units), a mirror (negative scale) by moving the mesh through it
+ * (lengths still in data units), any other matrix (SetScale(1, 1, 3) for thick slices, a shear)
+ * by moving the mesh into the world (lengths in world units); such meshes are rebuilt when the
+ * matrix changes. Opaque geometry in the scene ends the
  * rays at its depth (IntermixIntersectingGeometry). The mapper's ScalarMode and SelectScalarArray
  * choose the field (cell values are averaged to the points); ghost cells (DUPLICATECELL in
  * vtkGhostType) are skipped, as VTK's mappers skip them. Clipping planes (AddClippingPlane,
