@@ -47,9 +47,9 @@ void Declare(cli::Options& o)
 {
   o.Add("array", 0, "NAME", "point (or cell) array to render (default: the active scalars)");
   o.Add("tf", 0, "NAME|FILE",
-    "transfer function: a preset (ct-skin-bone, ct-bone, grey-ramp, constant) or a file of "
-    "'scalar r g b opacity' lines, or a ParaView preset exported as .json",
-    "ct-skin-bone");
+    "transfer function: a preset (auto = ct-skin-bone on CT in Hounsfield units, else grey-ramp; ct-skin-bone, "
+    "ct-bone, grey-ramp, constant) or a file of 'scalar r g b opacity' lines, or a ParaView preset exported as .json",
+    "auto");
   o.Add("unit-distance", 0, "U",
     "world distance over which the transfer function's opacity applies (default: 1 for CT in Hounsfield "
     "units, in mm; else the data's mean sample spacing, so any unit renders alike)");

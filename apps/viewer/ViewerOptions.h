@@ -22,7 +22,7 @@ struct ViewerOptions
   std::vector<long long> Tets;   ///< nested reduction budgets, ascending (volumes)
   std::vector<double> TetPercents; ///< more budgets as percentages of the voxel count
   std::string Array;             ///< point (or cell) array to show (default: the active scalars)
-  std::string TransferFunction = "ct-skin-bone";
+  std::string TransferFunction = "auto";
   std::string Script;            ///< file of scripted actions (tests, demos)
   std::string Screenshot;        ///< take one after the script (or the reduction) and exit
   bool Help = false;

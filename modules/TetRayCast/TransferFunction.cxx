@@ -209,7 +209,7 @@ void TransferFunction::ToVTK(vtkVolumeProperty* p) const
 
 std::vector<std::string> TransferFunction::PresetNames()
 {
-  return { "ct-skin-bone", "ct-bone", "grey-ramp", "constant" };
+  return { "auto", "ct-skin-bone", "ct-bone", "grey-ramp", "constant" };
 }
 
 double TransferFunction::PresetUnitDistance(double lo, double hi, double h)
@@ -255,24 +255,29 @@ TransferFunction TransferFunction::Preset(const std::string& name, double lo, do
   // CT presets in Hounsfield units when the data look like CT, else at fractions of the range.
   const bool hu = LooksLikeHU(lo, hi);
   auto at = [&](double h, double frac) { return hu ? h : lo + frac * (hi - lo); };
+  // The last node: at the data's maximum, or 1 HU past the one before when CT stops below it.
+  auto top = [&](double h) { return hu ? std::max(hi, h + 1) : hi; };
+  // "auto": the skin-and-bone preset on CT, a grey ramp on anything else (MRI, simulations),
+  // where the CT presets' opaque top fifth of the range draws an opaque white blob.
+  const std::string kind = name == "auto" ? (hu ? "ct-skin-bone" : "grey-ramp") : name;
   std::vector<Node> n;
-  if (name == "ct-skin-bone")
+  if (kind == "ct-skin-bone")
   {
     n = { { lo, { 0, 0, 0 }, 0.0, 0 }, { at(-600, 0.15), { 0.75, 0.45, 0.3 }, 0.0, 0 },
       { at(-450, 0.2), { 0.9, 0.6, 0.45 }, 0.12, 0 }, { at(-300, 0.25), { 0.9, 0.65, 0.5 }, 0.0, 0 },
       { at(200, 0.45), { 0.95, 0.85, 0.7 }, 0.0, 0 }, { at(450, 0.55), { 1.0, 0.95, 0.85 }, 0.25, 0 },
-      { at(1200, 0.8), { 1.0, 1.0, 0.95 }, 0.7, 0 }, { std::max(hi, at(1200, 0.8) + 1), { 1, 1, 1 }, 0.8, 0 } };
+      { at(1200, 0.8), { 1.0, 1.0, 0.95 }, 0.7, 0 }, { top(at(1200, 0.8)), { 1, 1, 1 }, 0.8, 0 } };
   }
-  else if (name == "ct-bone")
+  else if (kind == "ct-bone")
   {
     n = { { lo, { 0, 0, 0 }, 0.0, 0 }, { at(200, 0.45), { 0.9, 0.8, 0.65 }, 0.0, 0 },
-      { at(500, 0.6), { 1.0, 0.95, 0.85 }, 0.3, 0 }, { std::max(hi, at(500, 0.6) + 1), { 1, 1, 1 }, 0.8, 0 } };
+      { at(500, 0.6), { 1.0, 0.95, 0.85 }, 0.3, 0 }, { top(at(500, 0.6)), { 1, 1, 1 }, 0.8, 0 } };
   }
-  else if (name == "grey-ramp")
+  else if (kind == "grey-ramp")
   {
     n = { { lo, { 0, 0, 0 }, 0.0, 0 }, { hi, { 1, 1, 1 }, 0.2, 0 } };
   }
-  else if (name == "constant")
+  else if (kind == "constant")
   {
     n = { { lo, { 0, 0, 0 }, 0.05, 0 }, { hi, { 1, 1, 1 }, 0.05, 0 } };
   }

@@ -42,7 +42,8 @@ public:
   static TransferFunction FromVTK(vtkVolumeProperty* p);
   /// "ct-skin-bone", "ct-bone", "grey-ramp", "constant" laid over the data range [lo, hi]
   /// (CT presets use Hounsfield units when the range looks like CT, else fractions of it), their
-  /// opacities per unitDistance world units (PresetUnitDistance gives the data's).
+  /// opacities per unitDistance world units (PresetUnitDistance gives the data's). "auto" is
+  /// ct-skin-bone when the range looks like CT, else grey-ramp.
   static TransferFunction Preset(const std::string& name, double lo, double hi, double unitDistance = 1.0);
   static std::vector<std::string> PresetNames();
   /// Does the range [lo, hi] look like CT in Hounsfield units (air near -1000, bone above 500)?

@@ -339,3 +339,46 @@ TEST(TransferFunction, FileAndPresetErrors)
     EXPECT_GT(TransferFunction::Preset(name, 7, 7).Alpha(7), 0.01) << name;
   }
 }
+
+// The default preset: skin and bone on CT in Hounsfield units; on other data (an MRI in 0..231)
+// the CT preset's opaque top fifth drew the bright scalp as an opaque white blob, so a grey ramp.
+TEST(TransferFunction, AutoPresetPicksByTheData)
+{
+  auto same = [](const TransferFunction& a, const TransferFunction& b) {
+    if (a.Nodes().size() != b.Nodes().size())
+    {
+      return false;
+    }
+    for (std::size_t i = 0; i < a.Nodes().size(); ++i)
+    {
+      if (a.Nodes()[i].s != b.Nodes()[i].s || a.Nodes()[i].alpha != b.Nodes()[i].alpha)
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  EXPECT_TRUE(same(TransferFunction::Preset("auto", -1024, 2697), TransferFunction::Preset("ct-skin-bone", -1024, 2697)));
+  EXPECT_TRUE(same(TransferFunction::Preset("auto", 0, 231), TransferFunction::Preset("grey-ramp", 0, 231)));
+  EXPECT_FALSE(same(TransferFunction::Preset("auto", 0, 231), TransferFunction::Preset("ct-skin-bone", 0, 231)));
+}
+
+// The CT presets on data that are not in Hounsfield units sit at fractions of the range, so data
+// scaled by any factor get the same function scaled: the top node added 1 data unit, which put it
+// far past the data of a range below ~5 (an MRI normalised to 0..1), paler and more transparent.
+TEST(TransferFunction, CTPresetsScaleWithNonCTData)
+{
+  for (const char* name : { "ct-skin-bone", "ct-bone" })
+  {
+    const TransferFunction a = TransferFunction::Preset(name, 0, 231);
+    for (double k : { 1.0 / 255, 1e-6 })
+    {
+      const TransferFunction b = TransferFunction::Preset(name, 0, 231 * k);
+      ASSERT_EQ(a.Nodes().size(), b.Nodes().size()) << name;
+      for (std::size_t i = 0; i < a.Nodes().size(); ++i)
+      {
+        EXPECT_NEAR(b.Nodes()[i].s, a.Nodes()[i].s * k, 1e-12 * 231 * k) << name << " node " << i << " scale " << k;
+      }
+    }
+  }
+}
