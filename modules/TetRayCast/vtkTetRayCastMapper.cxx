@@ -1,8 +1,8 @@
 #include "vtkTetRayCastMapper.h"
 
-#include "ArrayChoice.h"
 #include "Camera.h"
 #include "Error.h"
+#include "MapperGrid.h"
 #include "Progress.h"
 #include "TetMesh.h"
 #include "TetRayCaster.h"
@@ -10,26 +10,17 @@
 #include <vtkAutoInit.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
-#include <vtkDataArray.h>
-#include <vtkDataSetAttributes.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPiecewiseFunction.h>
-#include <vtkDataSetTriangleFilter.h>
-#include <vtkTetra.h>
-#include <vtkPlane.h>
-#include <vtkPlaneCollection.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkRayCastImageDisplayHelper.h>
-#include <vtkCellData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
-#include <vtkTableBasedClipDataSet.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkVolume.h>
 #include <vtkVolumeProperty.h>
@@ -38,7 +29,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <memory>
 #include <thread>
@@ -98,57 +88,6 @@ std::vector<double> RayEndsFromDepth(
   return ends;
 }
 
-// The scale of `m` when its linear part is a rotation or mirror times one scale (orthogonal
-// columns of one length), else 0.
-double SimilarityScale(vtkMatrix4x4* m)
-{
-  double c[3][3], len2[3];
-  for (int j = 0; j < 3; ++j)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      c[j][i] = m->GetElement(i, j);
-    }
-    len2[j] = c[j][0] * c[j][0] + c[j][1] * c[j][1] + c[j][2] * c[j][2];
-  }
-  const double lo = std::min(len2[0], std::min(len2[1], len2[2])), hi = std::max(len2[0], std::max(len2[1], len2[2]));
-  if (!(lo > 0) || hi > lo * (1 + 2e-6))
-  {
-    return 0.0;
-  }
-  for (int a = 0; a < 3; ++a)
-  {
-    const int b = (a + 1) % 3;
-    if (std::fabs(c[a][0] * c[b][0] + c[a][1] * c[b][1] + c[a][2] * c[b][2]) > 1e-6 * hi)
-    {
-      return 0.0;
-    }
-  }
-  return std::sqrt(std::cbrt(len2[0] * len2[1] * len2[2]));
-}
-
-// grid with its points taken through `m` (the volume's matrix, or a mirror's divided by its scale),
-// into the coordinates the engine casts in.
-vtkSmartPointer<vtkUnstructuredGrid> Transformed(vtkUnstructuredGrid* grid, vtkMatrix4x4* m)
-{
-  auto pts = vtkSmartPointer<vtkPoints>::New();
-  pts->SetDataTypeToDouble();
-  pts->SetNumberOfPoints(grid->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-  {
-    double p[4] = { 0, 0, 0, 1 }, q[4];
-    grid->GetPoint(i, p);
-    m->MultiplyPoint(p, q);
-    pts->SetPoint(i, q[0] / q[3], q[1] / q[3], q[2] / q[3]);
-  }
-  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  out->CopyStructure(grid);
-  out->SetPoints(pts);
-  out->GetPointData()->PassData(grid->GetPointData());
-  out->GetCellData()->PassData(grid->GetCellData());
-  return out;
-}
-
 // Moves `cam` into the data's coordinates (the inverse of the volume's matrix, a rotation times
 // one scale: SimilarityScale), its parallel scale divided by the matrix's scale.
 void IntoData(vtkCamera* cam, vtkMatrix4x4* toWorld, vtkMatrix4x4* toData)
@@ -195,173 +134,6 @@ double QuadDepth(vtkRenderer* ren, const double b[6], vtkMatrix4x4* toWorld)
     }
   }
   return std::min(std::max(minZ, 0.0), 1.0);
-}
-// The grid as the engine should see it under the mapper's ScalarMode: sharing grid's points and
-// cells, with only the array the mode selects (TetMesh::FromVTK takes the point scalars, else
-// averages the cell scalars to the points). VTK_SCALAR_MODE_DEFAULT passes grid as it is. `key`
-// names the choice (a change rebuilds the mesh); nullptr, with `error` set, when there is none.
-vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(
-  vtkUnstructuredGrid* grid, int mode, const char* name, int id, std::string& key, std::string& error)
-{
-  vtkDataArray* a = nullptr;
-  bool onCells = false;
-  switch (mode)
-  {
-    case VTK_SCALAR_MODE_USE_POINT_DATA:
-      a = grid->GetPointData()->GetScalars();
-      error = a ? "" : "ScalarMode is UsePointData but the input has no point scalars";
-      break;
-    case VTK_SCALAR_MODE_USE_CELL_DATA:
-      a = grid->GetCellData()->GetScalars();
-      onCells = true;
-      error = a ? "" : "ScalarMode is UseCellData but the input has no cell scalars";
-      break;
-    case VTK_SCALAR_MODE_USE_POINT_FIELD_DATA:
-    case VTK_SCALAR_MODE_USE_CELL_FIELD_DATA:
-    {
-      onCells = mode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA;
-      vtkFieldData* fd = onCells ? static_cast<vtkFieldData*>(grid->GetCellData())
-                                 : static_cast<vtkFieldData*>(grid->GetPointData());
-      a = name ? fd->GetArray(name) : fd->GetArray(id);
-      if (!a)
-      {
-        const std::string what = name ? "'" + std::string(name) + "'" : "number " + std::to_string(id);
-        error = std::string("the input has no ") + (onCells ? "cell" : "point") + " array " + what +
-          " (SelectScalarArray; its arrays: " + art::ArrayNames({ grid->GetPointData(), grid->GetCellData() }) + ")";
-      }
-      break;
-    }
-    default:
-      key = "default";
-      return grid;
-  }
-  if (!a)
-  {
-    return nullptr;
-  }
-  if (a->GetNumberOfComponents() != 1)
-  {
-    error = std::string(onCells ? "cell" : "point") + " array '" + (a->GetName() ? a->GetName() : "") + "' has " +
-      std::to_string(a->GetNumberOfComponents()) +
-      " components; the mapper renders one (select another with SelectScalarArray, or extract a component)";
-    return nullptr;
-  }
-  vtkSmartPointer<vtkDataArray> named = a;
-  if (!a->GetName() || !*a->GetName())
-  {
-    // FromVTK averages cell arrays to the points by name.
-    named.TakeReference(a->NewInstance());
-    named->ShallowCopy(a);
-    named->SetName("scalars");
-  }
-  auto view = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  view->CopyStructure(grid);
-  (onCells ? static_cast<vtkDataSetAttributes*>(view->GetCellData()) : view->GetPointData())->SetScalars(named);
-  key = std::to_string(mode) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(a));
-  return view;
-}
-// engineGrid (grid, or a view sharing its cells) without the cells grid marks as ghosts
-// (DUPLICATECELL in vtkGhostType: a parallel piece's copies of its neighbours' cells, drawn by
-// their own piece, as VTK's mappers skip them) and without the marks (never taken as scalars).
-vtkSmartPointer<vtkUnstructuredGrid> WithoutGhosts(vtkUnstructuredGrid* engineGrid, vtkUnstructuredGrid* grid)
-{
-  vtkDataArray* marks = grid->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName());
-  if (!marks)
-  {
-    return engineGrid;
-  }
-  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  out->ShallowCopy(engineGrid);
-  out->GetCellData()->AddArray(marks);
-  out->RemoveGhostCells();
-  out->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
-  return out;
-}
-
-// The mapper's clipping planes (world coordinates, keeping the side their normal points to, as
-// VTK's mappers do) in the data's coordinates: (a, b, c, d) with a x + b y + c z + d >= 0 kept.
-std::vector<std::array<double, 4>> PlanesInData(vtkPlaneCollection* planes, vtkMatrix4x4* toWorld)
-{
-  std::vector<std::array<double, 4>> out;
-  if (!planes)
-  {
-    return out;
-  }
-  for (int i = 0; i < planes->GetNumberOfItems(); ++i)
-  {
-    vtkPlane* p = planes->GetItem(i);
-    double n[3], o[3];
-    p->GetNormal(n);
-    p->GetOrigin(o);
-    // n . (M x - o) = (M^T n) . x - n . o
-    std::array<double, 4> q{};
-    for (int c = 0; c < 3; ++c)
-    {
-      q[c] = n[0] * toWorld->GetElement(0, c) + n[1] * toWorld->GetElement(1, c) + n[2] * toWorld->GetElement(2, c);
-    }
-    double t[3] = { toWorld->GetElement(0, 3), toWorld->GetElement(1, 3), toWorld->GetElement(2, 3) };
-    q[3] = n[0] * (t[0] - o[0]) + n[1] * (t[1] - o[1]) + n[2] * (t[2] - o[2]);
-    out.push_back(q);
-  }
-  return out;
-}
-
-// grid cut by each plane in turn (exact for the linear field inside each tet).
-vtkSmartPointer<vtkUnstructuredGrid> Clipped(vtkUnstructuredGrid* grid, const std::vector<std::array<double, 4>>& planes)
-{
-  vtkSmartPointer<vtkUnstructuredGrid> g = grid;
-  for (const auto& q : planes)
-  {
-    const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-    if (!(len > 0))
-    {
-      continue;
-    }
-    vtkNew<vtkPlane> plane;
-    plane->SetNormal(q[0] / len, q[1] / len, q[2] / len);
-    plane->SetOrigin(-q[3] * q[0] / (len * len), -q[3] * q[1] / (len * len), -q[3] * q[2] / (len * len));
-    vtkNew<vtkTableBasedClipDataSet> clip;
-    clip->SetInputData(g);
-    clip->SetClipFunction(plane);
-    clip->Update();
-    g = clip->GetOutput();
-    if (g->GetNumberOfCells() == 0)
-    {
-      return g;
-    }
-  }
-  // A plane through vertices leaves cells of no volume (wedges collapsed onto it), which the walk
-  // cannot link: the pieces are cut into tets and the flat ones left out.
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputData(g);
-  tets->Update();
-  vtkUnstructuredGrid* t = tets->GetOutput();
-  const double d = t->GetLength(), flat = 1e-12 * d * d * d;
-  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  out->SetPoints(t->GetPoints());
-  out->GetPointData()->ShallowCopy(t->GetPointData());
-  out->GetCellData()->CopyAllocate(t->GetCellData(), t->GetNumberOfCells());
-  out->Allocate(t->GetNumberOfCells());
-  for (vtkIdType c = 0; c < t->GetNumberOfCells(); ++c)
-  {
-    double p[4][3];
-    vtkIdType n;
-    const vtkIdType* ids;
-    t->GetCellPoints(c, n, ids);
-    if (t->GetCellType(c) != VTK_TETRA || n != 4)
-    {
-      continue;
-    }
-    for (int k = 0; k < 4; ++k)
-    {
-      t->GetPoint(ids[k], p[k]);
-    }
-    if (std::fabs(vtkTetra::ComputeVolume(p[0], p[1], p[2], p[3])) > flat)
-    {
-      out->GetCellData()->CopyData(t->GetCellData(), c, out->InsertNextCell(VTK_TETRA, 4, ids));
-    }
-  }
-  return out;
 }
 } // namespace
 
@@ -438,7 +210,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   // The array the usual vtkAbstractVolumeMapper settings select (ScalarMode, SelectScalarArray).
   std::string key, error;
-  vtkSmartPointer<vtkUnstructuredGrid> engineGrid = SelectedScalars(grid, this->ScalarMode,
+  vtkSmartPointer<vtkUnstructuredGrid> engineGrid = art::mapper::SelectedScalars(grid, this->ScalarMode,
     this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME ? this->ArrayName : nullptr, this->ArrayId, key, error);
   if (!engineGrid)
   {
@@ -454,7 +226,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // 1, 3) for thick slices) or a shear as it is, lengths in world units.
   vtkMatrix4x4* toWorld = vol->GetMatrix();
   vtkNew<vtkMatrix4x4> engineToWorld, meshToEngine; // the engine's mesh is meshToEngine * data
-  const double scale = SimilarityScale(toWorld);
+  const double scale = art::mapper::SimilarityScale(toWorld);
   const bool similar = scale > 0 && toWorld->Determinant() > 0;
   if (similar)
   {
@@ -482,7 +254,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   vtkNew<vtkMatrix4x4> toData;
   vtkMatrix4x4::Invert(engineToWorld, toData);
-  const std::vector<std::array<double, 4>> planes = PlanesInData(this->ClippingPlanes, engineToWorld);
+  const std::vector<std::array<double, 4>> planes = art::mapper::PlanesInData(this->ClippingPlanes, engineToWorld);
   for (const auto& pl : planes)
   {
     key += " clip " + std::to_string(pl[0]) + "," + std::to_string(pl[1]) + "," + std::to_string(pl[2]) + "," +
@@ -497,18 +269,18 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       std::string note;
       this->Impl->Caster.reset();
       this->Impl->Mesh.reset();
-      engineGrid = WithoutGhosts(engineGrid, grid);
+      engineGrid = art::mapper::WithoutGhosts(engineGrid, grid);
       if (engineGrid->GetNumberOfCells() == 0)
       {
         return; // only ghosts: their own pieces draw them
       }
       if (!similar)
       {
-        engineGrid = Transformed(engineGrid, meshToEngine);
+        engineGrid = art::mapper::Transformed(engineGrid, meshToEngine);
       }
       if (!planes.empty())
       {
-        engineGrid = Clipped(engineGrid, planes);
+        engineGrid = art::mapper::Clipped(engineGrid, planes);
         if (engineGrid->GetNumberOfCells() == 0)
         {
           return; // everything is clipped away: nothing to draw
