@@ -18,6 +18,9 @@ struct RelocationOptions
 {
   int Sweeps = 3;            ///< Gauss-Seidel sweeps over the vertices
   double QualityFloor = 0.2; ///< a moved tet keeps 6 sqrt(2) V / l_rms^3 >= min(this, its value before)
+  int ScreenStride = 0;      ///< candidates screened on every s-th voxel per axis (0: automatic, up to 3)
+  int ScreenVoxels = 64;     ///< the screening subsample keeps at least this many of a star's voxels
+  int ExactCandidates = 1;   ///< the best screened candidates evaluated exactly
 };
 
 struct RelocationStats
@@ -31,9 +34,12 @@ class ADAPTIVERTREDUCTION_EXPORT VertexRelocator
 {
 public:
   /// Relocates the vertices of `mesh` (the fit `x` on it is updated with it). Each visit tries
-  /// moves of one vertex along the voxel gradient, the axes and toward its star's centroid,
-  /// at fractions of the distance that would flatten a tet of its star; the best is kept when
-  /// the star's squared error, with that vertex's value refitted (the others fixed), drops, no
+  /// moves of one vertex along the voxel gradient, the axes and toward its star's centroid, 0.3
+  /// of the distance that would flatten a tet of its star, then half and 1.5 times the best of
+  /// these; candidates are ranked on a subsample of the star's voxels in floating point
+  /// (ScreenRaster) and the best is evaluated exactly (TetRaster; the star's error at the
+  /// current place comes from per-tet voxel moments kept up to date when unweighted). It is
+  /// kept when the star's squared error, with that vertex's value refitted (the others fixed), drops, no
   /// tet of the star flips or flattens (exact integer orientation on the lattice) and none gets
   /// worse than the quality floor. Box corners stay, vertices on a box edge or face move only
   /// within it, so the mesh stays a conforming tetrahedrisation of the box and the lattice

@@ -1,7 +1,8 @@
 // Vertex relocation (VertexRelocator, ReducerOptions::RelocateVertices): on the CT the error
 // falls and never rises, tets keep their orientation, box corners, edges and faces are kept,
 // every voxel centre stays in exactly one tet; a sharp step pulls vertices onto it; the same
-// result for any thread count; a moved mesh refuses further bisection.
+// result for any thread count; a moved mesh refuses further bisection. The screening raster and
+// the strided scans it uses agree with the exact raster.
 #include "BisectionMesh.h"
 #include "DataLoader.h"
 #include "Error.h"
@@ -10,12 +11,15 @@
 #include "ReductionFixtures.h"
 #include "TetReducer.h"
 #include "VertexRelocator.h"
+#include "VoxelRaster.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <vector>
 
 using fixtures::ExpectEachVoxelOwnedOnce;
 using fixtures::SignedVolume6;
@@ -229,4 +233,71 @@ TEST(VertexRelocator, WeightedByOpacityTheWeightedErrorFalls)
   ASSERT_TRUE(moved.Weighted);
   EXPECT_EQ(moved.NumberOfTets(), plain.NumberOfTets());
   EXPECT_LT(moved.WeightedRms, 0.9 * plain.WeightedRms) << plain.WeightedRms << " -> " << moved.WeightedRms;
+}
+
+TEST(VertexRelocator, ScreeningRasterAndSubsampleAgreeWithTheExactRaster)
+{
+  // Tets with corners off the lattice (as relocated ones are): the floating-point screening
+  // raster finds the same voxel centres as the exact one, and a stride-s scan is the exact set
+  // restricted to multiples of s.
+  const int dims[3] = { 23, 19, 17 };
+  const int64_t S = art::BisectionMesh::Scale;
+  uint64_t seed = 12345;
+  auto next = [&seed](int64_t hi) {
+    seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<int64_t>((seed >> 11) % static_cast<uint64_t>(hi + 1));
+  };
+  long long total = 0;
+  for (int n = 0; n < 200; ++n)
+  {
+    art::LatticePoint P[4];
+    for (auto& p : P)
+    {
+      p.x = next((dims[0] - 1) * S), p.y = next((dims[1] - 1) * S), p.z = next((dims[2] - 1) * S);
+    }
+    art::TetRaster exact;
+    art::ScreenRaster screen;
+    if (!exact.Setup(P))
+    {
+      continue;
+    }
+    ASSERT_TRUE(screen.Setup(P, dims));
+    std::vector<long long> a, b;
+    std::vector<std::array<double, 4>> la, lb;
+    exact.ForEachVoxel(dims, [&](long long idx, const double* l) {
+      a.push_back(idx);
+      la.push_back({ l[0], l[1], l[2], l[3] });
+    });
+    screen.ForEachVoxel(dims, 1, [&](long long idx, const double* l) {
+      b.push_back(idx);
+      lb.push_back({ l[0], l[1], l[2], l[3] });
+    });
+    ASSERT_EQ(a, b) << "tet " << n;
+    for (size_t i = 0; i < a.size(); ++i)
+    {
+      for (int q = 0; q < 4; ++q)
+      {
+        EXPECT_NEAR(la[i][q], lb[i][q], 1e-9);
+      }
+    }
+    total += static_cast<long long>(a.size());
+    for (int st = 2; st <= 3; ++st)
+    {
+      std::vector<long long> sub, want;
+      exact.ForEachVoxel(dims, [&](long long idx, const double*) { sub.push_back(idx); }, st);
+      std::vector<long long> subScreen;
+      screen.ForEachVoxel(dims, st, [&](long long idx, const double*) { subScreen.push_back(idx); });
+      for (long long idx : a)
+      {
+        const long long i = idx % dims[0], j = (idx / dims[0]) % dims[1], k = idx / (dims[0] * dims[1]);
+        if (i % st == 0 && j % st == 0 && k % st == 0)
+        {
+          want.push_back(idx);
+        }
+      }
+      EXPECT_EQ(sub, want);
+      EXPECT_EQ(subScreen, want);
+    }
+  }
+  EXPECT_GT(total, 10000);
 }
