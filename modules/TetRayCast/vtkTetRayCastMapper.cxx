@@ -29,6 +29,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <thread>
@@ -228,28 +229,32 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   vtkNew<vtkMatrix4x4> engineToWorld, meshToEngine; // the engine's mesh is meshToEngine * data
   const double scale = art::mapper::SimilarityScale(toWorld);
   const bool similar = scale > 0 && toWorld->Determinant() > 0;
+  // Every digit: a key that rounds would keep a stale mesh for a slightly changed matrix or plane.
+  auto exact = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, " %.17g", v);
+    return std::string(buf);
+  };
   if (similar)
   {
     engineToWorld->DeepCopy(toWorld);
   }
   else
   {
-    meshToEngine->DeepCopy(toWorld);
-    if (scale > 0)
-    {
-      for (int r = 0; r < 3; ++r)
-      {
-        for (int c = 0; c < 4; ++c)
-        {
-          meshToEngine->SetElement(r, c, toWorld->GetElement(r, c) / scale);
-        }
-        engineToWorld->SetElement(r, r, scale);
-      }
-    }
+    // Only the linear part goes into the mesh (divided by a mirror's scale); the translation
+    // stays with the camera, so moving such a volume does not rebuild its mesh.
+    const double k = scale > 0 ? scale : 1.0;
     key += " world";
-    for (int i = 0; i < 16; ++i)
+    for (int r = 0; r < 3; ++r)
     {
-      key += " " + std::to_string(toWorld->GetElement(i / 4, i % 4));
+      for (int c = 0; c < 3; ++c)
+      {
+        meshToEngine->SetElement(r, c, toWorld->GetElement(r, c) / k);
+        key += exact(toWorld->GetElement(r, c));
+      }
+      meshToEngine->SetElement(r, 3, 0.0);
+      engineToWorld->SetElement(r, r, k);
+      engineToWorld->SetElement(r, 3, toWorld->GetElement(r, 3));
     }
   }
   vtkNew<vtkMatrix4x4> toData;
@@ -257,8 +262,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const std::vector<std::array<double, 4>> planes = art::mapper::PlanesInData(this->ClippingPlanes, engineToWorld);
   for (const auto& pl : planes)
   {
-    key += " clip " + std::to_string(pl[0]) + "," + std::to_string(pl[1]) + "," + std::to_string(pl[2]) + "," +
-      std::to_string(pl[3]);
+    key += " clip" + exact(pl[0]) + exact(pl[1]) + exact(pl[2]) + exact(pl[3]);
   }
   // (Re)build the engine's arrays only when the data, the array or the clipping planes changed.
   if (!this->Impl->Mesh || this->Impl->MeshInput != input || this->Impl->MeshTime < input->GetMTime() ||
