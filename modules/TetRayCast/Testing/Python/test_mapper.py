@@ -2,22 +2,17 @@
 
 Needs a display (CI runs ctest under xvfb-run -a); without one it reports a skip (exit 77).
 """
-import os
-import sys
+from mapper_scene import grab, offscreen_scene, require_display
 
-if not os.environ.get("DISPLAY"):
-    print("no DISPLAY: skipped (run under xvfb-run -a)")
-    sys.exit(77)
+require_display()
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkObject
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
-                                         vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolumeProperty
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 import adaptivert
 
@@ -47,27 +42,13 @@ prop.SetScalarOpacityUnitDistance(2.0)
 mapper = adaptivert.vtkTetRayCastMapper()
 mapper.SetInputData(grid)
 assert mapper.GetEarlyRayTermination() == 0.99
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-ren = vtkRenderer()
-ren.SetBackground(0, 0, 0)
-ren.AddVolume(volume)
-win = vtkRenderWindow()
-win.SetOffScreenRendering(1)
-win.SetSize(96, 80)
-win.AddRenderer(ren)
+volume, ren, win = offscreen_scene(mapper, prop, 96, 80)
 ren.ResetCamera()
 ren.GetActiveCamera().Azimuth(25)
 ren.GetActiveCamera().Elevation(15)
 win.Render()
 
-grab = vtkWindowToImageFilter()
-grab.SetInput(win)
-grab.SetInputBufferTypeToRGB()
-grab.ReadFrontBufferOff()
-grab.Update()
-shown = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(80, 96, 3).astype(float)
+shown = grab(win).astype(float)
 
 last = mapper.GetLastImage()
 assert last.GetDimensions()[:2] == (96, 80), last.GetDimensions()

@@ -8,61 +8,24 @@ scale were uniform (a warning said so): the view along x showed a 2.9-unit squar
 (negative scale) must be drawn where it is, with lengths in data units as for a positive scale.
 Needs a display (skips with exit 77).
 """
-import os
-import sys
+from mapper_scene import box_tets, constant_property, grab, offscreen_scene, require_display
 
-if not os.environ.get("DISPLAY"):
-    print("no DISPLAY: skipped (run under xvfb-run -a)")
-    sys.exit(77)
+require_display()
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
 from vtkmodules.vtkCommonMath import vtkMatrix4x4
-from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
-                                         vtkVolumeProperty, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 import adaptivert
 
-image = vtkImageData()
-image.SetDimensions(5, 5, 5)
-image.SetOrigin(-1, -1, -1)
-image.SetSpacing(0.5, 0.5, 0.5)
-image.AllocateScalars(10, 1)  # VTK_FLOAT
-image.GetPointData().GetScalars().Fill(1.0)
-tri = vtkDataSetTriangleFilter()
-tri.SetInputData(image)
-tri.Update()
-
 colour = np.array((1.0, 0.5, 0.2))
-ctf = vtkColorTransferFunction()
-ctf.AddRGBPoint(0, *colour)
-ctf.AddRGBPoint(2, *colour)
-otf = vtkPiecewiseFunction()
-otf.AddPoint(0, 0.3)
-otf.AddPoint(2, 0.3)
-prop = vtkVolumeProperty()
-prop.SetColor(ctf)
-prop.SetScalarOpacity(otf)
-prop.SetScalarOpacityUnitDistance(1.0)  # opacity 0.3 per world unit
+prop = constant_property(colour, 0.3, unit=1.0)  # opacity 0.3 per world unit
 
 mapper = adaptivert.vtkTetRayCastMapper()
-mapper.SetInputData(tri.GetOutput())
+mapper.SetInputData(box_tets())
 mapper.AutoAdjustSampleDistancesOff()
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-volume.SetScale(1, 1, 3)
-ren = vtkRenderer()
-ren.SetBackground(0, 0, 0)
-ren.AddVolume(volume)
 W = 100
-win = vtkRenderWindow()
-win.SetOffScreenRendering(1)
-win.SetSize(W, W)
-win.AddRenderer(ren)
+volume, ren, win = offscreen_scene(mapper, prop, W, W)
+volume.SetScale(1, 1, 3)
 cam = ren.GetActiveCamera()
 cam.ParallelProjectionOn()
 cam.SetParallelScale(4.0)  # the window shows 8 x 8 world units
@@ -74,12 +37,7 @@ def shown(position, up):
     cam.SetViewUp(*up)
     ren.ResetCameraClippingRange()
     win.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(win)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(W, W, 3) / 255.0
+    return grab(win) / 255.0
 
 
 def composite(thickness):

@@ -6,78 +6,31 @@ and each pixel must show the closed-form composite of the thickness left. A plan
 box's grid vertices (zero-volume pieces) must clip as well as one between them. It was ignored.
 Needs a display (skips with exit 77).
 """
-import os
-import sys
+from mapper_scene import box_tets, constant_property, grab, look_down_z, offscreen_scene, require_display
 
-if not os.environ.get("DISPLAY"):
-    print("no DISPLAY: skipped (run under xvfb-run -a)")
-    sys.exit(77)
+require_display()
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkObject
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkPlane
-from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
-                                         vtkVolumeProperty, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkCommonDataModel import vtkPlane
 
 import adaptivert
 
 vtkObject.GlobalWarningDisplayOff()
-image = vtkImageData()
-image.SetDimensions(5, 5, 5)
-image.SetOrigin(-1, -1, -1)
-image.SetSpacing(0.5, 0.5, 0.5)
-image.AllocateScalars(10, 1)  # VTK_FLOAT
-image.GetPointData().GetScalars().Fill(1.0)
-tri = vtkDataSetTriangleFilter()
-tri.SetInputData(image)
-tri.Update()
-
 colour = np.array((1.0, 0.5, 0.2))
-ctf = vtkColorTransferFunction()
-ctf.AddRGBPoint(0, *colour)
-ctf.AddRGBPoint(2, *colour)
-otf = vtkPiecewiseFunction()
-otf.AddPoint(0, 0.5)
-otf.AddPoint(2, 0.5)
-prop = vtkVolumeProperty()
-prop.SetColor(ctf)
-prop.SetScalarOpacity(otf)
-prop.SetScalarOpacityUnitDistance(1.0)  # opacity 0.5 per unit of thickness
+prop = constant_property(colour, 0.5, unit=1.0)  # opacity 0.5 per unit of thickness
 
 mapper = adaptivert.vtkTetRayCastMapper()
-mapper.SetInputData(tri.GetOutput())
+mapper.SetInputData(box_tets())
 mapper.AutoAdjustSampleDistancesOff()
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-ren = vtkRenderer()
-ren.SetBackground(0, 0, 0)
-ren.AddVolume(volume)
 W = 120
-win = vtkRenderWindow()
-win.SetOffScreenRendering(1)
-win.SetSize(W, W)
-win.AddRenderer(ren)
-cam = ren.GetActiveCamera()
-cam.ParallelProjectionOn()
-cam.SetPosition(0, 0, 10)
-cam.SetFocalPoint(0, 0, 0)
-cam.SetViewUp(0, 1, 0)
-cam.SetParallelScale(2.0)
-ren.ResetCameraClippingRange()
+volume, ren, win = offscreen_scene(mapper, prop, W, W)
+look_down_z(ren, 2.0)
 
 
 def shown():
     win.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(win)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(W, W, 3) / 255.0
+    return grab(win) / 255.0
 
 
 def at(img, x, y=0.0):

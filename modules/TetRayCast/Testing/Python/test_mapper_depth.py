@@ -4,58 +4,24 @@ A 2 x 2 x 2 box of constant colour and opacity seen straight on (parallel projec
 opaque plane through its middle on the left third, one behind it in the middle third and none on the
 right: each third must show its closed-form composite. Needs a display (skips with exit 77).
 """
-import math
-import os
-import sys
+from mapper_scene import box_tets, constant_property, grab, look_down_z, offscreen_scene, require_display
 
-if not os.environ.get("DISPLAY"):
-    print("no DISPLAY: skipped (run under xvfb-run -a)")
-    sys.exit(77)
+require_display()
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
-from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkFiltersSources import vtkPlaneSource
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkColorTransferFunction, vtkPolyDataMapper,
-                                         vtkRenderer, vtkRenderWindow, vtkVolume, vtkVolumeProperty,
-                                         vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderer
 
 import adaptivert
 
-image = vtkImageData()
-image.SetDimensions(5, 5, 5)
-image.SetOrigin(-1, -1, -1)
-image.SetSpacing(0.5, 0.5, 0.5)
-image.AllocateScalars(10, 1)  # VTK_FLOAT
-image.GetPointData().GetScalars().Fill(1.0)
-tri = vtkDataSetTriangleFilter()
-tri.SetInputData(image)
-tri.Update()
-
 colour = (1.0, 0.5, 0.2)
-ctf = vtkColorTransferFunction()
-ctf.AddRGBPoint(0, *colour)
-ctf.AddRGBPoint(2, *colour)
-otf = vtkPiecewiseFunction()
-otf.AddPoint(0, 0.5)
-otf.AddPoint(2, 0.5)
-prop = vtkVolumeProperty()
-prop.SetColor(ctf)
-prop.SetScalarOpacity(otf)
-prop.SetScalarOpacityUnitDistance(1.0)  # opacity 0.5 per unit of thickness
+prop = constant_property(colour, 0.5, unit=1.0)  # opacity 0.5 per unit of thickness
 
 mapper = adaptivert.vtkTetRayCastMapper()
-mapper.SetInputData(tri.GetOutput())
+mapper.SetInputData(box_tets())
 assert mapper.GetIntermixIntersectingGeometry() == 1
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-
-ren = vtkRenderer()
-ren.SetBackground(0, 0, 0)
-ren.AddVolume(volume)
+W = H = 120
+volume, ren, win = offscreen_scene(mapper, prop, W, H)
 blue = (0.0, 0.0, 1.0)
 for x0, x1, z in ((-1.5, -0.5, 0.0), (-0.5, 0.5, -2.0)):  # through the middle; behind the box
     plane = vtkPlaneSource()
@@ -69,30 +35,13 @@ for x0, x1, z in ((-1.5, -0.5, 0.0), (-0.5, 0.5, -2.0)):  # through the middle; 
     actor.GetProperty().SetColor(*blue)
     actor.GetProperty().LightingOff()
     ren.AddActor(actor)
-
-W = H = 120
-win = vtkRenderWindow()
-win.SetOffScreenRendering(1)
-win.SetSize(W, H)
-win.AddRenderer(ren)
-cam = ren.GetActiveCamera()
-cam.ParallelProjectionOn()
-cam.SetPosition(0, 0, 10)
-cam.SetFocalPoint(0, 0, 0)
-cam.SetViewUp(0, 1, 0)
-cam.SetParallelScale(1.5)
-ren.ResetCameraClippingRange()
+cam = look_down_z(ren, 1.5)
 
 
-def shown(width=W):
+def shown():
     """Renders the window and returns its RGB in [0, 1], row 0 at the bottom."""
     win.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(win)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    return vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(H, width, 3) / 255.0
+    return grab(win) / 255.0
 
 
 def composite(thickness, behind):
@@ -132,7 +81,7 @@ ca.GetProperty().LightingOff()
 left.AddActor(ca)
 left.SetActiveCamera(cam)
 win.AddRenderer(left)
-wide = shown(2 * W)
+wide = shown()
 right = wide[:, W:]
 for x, want in expect.items():
     got = third(right, x)

@@ -6,37 +6,19 @@ repeated as marked ghosts, must show the closed-form composite of the box once o
 ghosts overlapped the cells they copy and the mapper refused the mesh. Needs a display (skips
 with exit 77).
 """
-import os
-import sys
+from mapper_scene import box_tets, constant_property, grab, look_down_z, offscreen_scene, require_display
 
-if not os.environ.get("DISPLAY"):
-    print("no DISPLAY: skipped (run under xvfb-run -a)")
-    sys.exit(77)
+require_display()
 
 import numpy as np
 from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand, vtkIdList, vtkUnsignedCharArray
-from vtkmodules.vtkCommonDataModel import (vtkDataSetAttributes, vtkImageData, vtkPiecewiseFunction,
-                                           vtkUnstructuredGrid)
-from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
-                                         vtkVolumeProperty, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes, vtkUnstructuredGrid
 
 import adaptivert
 
-image = vtkImageData()
-image.SetDimensions(5, 5, 5)
-image.SetOrigin(-1, -1, -1)
-image.SetSpacing(0.5, 0.5, 0.5)
-image.AllocateScalars(10, 1)  # VTK_FLOAT
-image.GetPointData().GetScalars().Fill(1.0)
-tri = vtkDataSetTriangleFilter()
-tri.SetInputData(image)
-tri.Update()
-box = tri.GetOutput()
+box = box_tets()
 
 piece = vtkUnstructuredGrid()
 piece.SetPoints(box.GetPoints())
@@ -56,16 +38,7 @@ piece.GetCellData().AddArray(marks)
 assert piece.GetNumberOfCells() == box.GetNumberOfCells() * 3 // 2
 
 colour = np.array((1.0, 0.5, 0.2))
-ctf = vtkColorTransferFunction()
-ctf.AddRGBPoint(0, *colour)
-ctf.AddRGBPoint(2, *colour)
-otf = vtkPiecewiseFunction()
-otf.AddPoint(0, 0.5)
-otf.AddPoint(2, 0.5)
-prop = vtkVolumeProperty()
-prop.SetColor(ctf)
-prop.SetScalarOpacity(otf)
-prop.SetScalarOpacityUnitDistance(1.0)
+prop = constant_property(colour, 0.5, unit=1.0)
 
 mapper = adaptivert.vtkTetRayCastMapper()
 mapper.SetInputData(piece)
@@ -79,31 +52,11 @@ def on_error(obj, event, text):
 
 
 mapper.AddObserver(vtkCommand.ErrorEvent, on_error)
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-ren = vtkRenderer()
-ren.SetBackground(0, 0, 0)
-ren.AddVolume(volume)
 W = 80
-win = vtkRenderWindow()
-win.SetOffScreenRendering(1)
-win.SetSize(W, W)
-win.AddRenderer(ren)
-cam = ren.GetActiveCamera()
-cam.ParallelProjectionOn()
-cam.SetPosition(0, 0, 10)
-cam.SetFocalPoint(0, 0, 0)
-cam.SetViewUp(0, 1, 0)
-cam.SetParallelScale(1.5)
-ren.ResetCameraClippingRange()
+volume, ren, win = offscreen_scene(mapper, prop, W, W)
+look_down_z(ren, 1.5)
 win.Render()
-grab = vtkWindowToImageFilter()
-grab.SetInput(win)
-grab.SetInputBufferTypeToRGB()
-grab.ReadFrontBufferOff()
-grab.Update()
-img = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(W, W, 3) / 255.0
+img = grab(win) / 255.0
 assert not errors, errors
 want = colour * (1 - 0.5 ** 2)
 for x in (-0.5, 0.5):

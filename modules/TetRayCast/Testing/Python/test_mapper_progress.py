@@ -4,13 +4,11 @@ whole image in place.
 
 Needs a display (CI runs ctest under xvfb-run -a); without one it reports a skip (exit 77).
 """
-import os
-import sys
 import time
 
-if not os.environ.get("DISPLAY"):
-    print("no DISPLAY: skipped (run under xvfb-run -a)")
-    sys.exit(77)
+from mapper_scene import offscreen_scene, require_display
+
+require_display()
 
 import numpy as np
 from vtkmodules.util.misc import calldata_type
@@ -19,9 +17,7 @@ from vtkmodules.vtkCommonCore import VTK_DOUBLE, vtkCommand, vtkObject
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
 from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
-                                         vtkVolume, vtkVolumeProperty)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkRenderingCore import vtkColorTransferFunction, vtkVolumeProperty
 
 import adaptivert
 
@@ -47,15 +43,7 @@ prop.SetScalarOpacityUnitDistance(2.0)
 mapper = adaptivert.vtkTetRayCastMapper()
 mapper.SetInputData(tri.GetOutput())
 mapper.AutoAdjustSampleDistancesOff()
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-ren = vtkRenderer()
-ren.AddVolume(volume)
-win = vtkRenderWindow()
-win.SetOffScreenRendering(1)
-win.SetSize(200, 160)
-win.AddRenderer(ren)
+volume, ren, win = offscreen_scene(mapper, prop, 200, 160)
 ren.ResetCamera()
 
 events = []

@@ -5,36 +5,18 @@ A 2 x 2 x 2 box seen straight on whose point scalars are 1 (green), a point arra
 must show its array's colour at the closed-form opacity, switching modes re-renders, and a
 missing or vector array is an error naming it. Needs a display (skips with exit 77).
 """
-import os
-import sys
+from mapper_scene import box_tets, constant_property, grab, look_down_z, offscreen_scene, require_display
 
-if not os.environ.get("DISPLAY"):
-    print("no DISPLAY: skipped (run under xvfb-run -a)")
-    sys.exit(77)
+require_display()
 
 import numpy as np
 from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand, vtkFloatArray
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
-from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
-                                         vtkVolumeProperty, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 import adaptivert
 
-image = vtkImageData()
-image.SetDimensions(5, 5, 5)
-image.SetOrigin(-1, -1, -1)
-image.SetSpacing(0.5, 0.5, 0.5)
-image.AllocateScalars(10, 1)  # VTK_FLOAT
-image.GetPointData().GetScalars().Fill(1.0)
-tri = vtkDataSetTriangleFilter()
-tri.SetInputData(image)
-tri.Update()
-grid = tri.GetOutput()
+grid = box_tets()
 
 
 def array(name, n, value, components=1):
@@ -51,17 +33,12 @@ grid.GetPointData().AddArray(array("velocity", grid.GetNumberOfPoints(), 1.0, 3)
 grid.GetCellData().SetScalars(array("cellz", grid.GetNumberOfCells(), 0.0))
 grid.GetCellData().AddArray(array("two", grid.GetNumberOfCells(), 0.0))
 
-ctf = vtkColorTransferFunction()
+prop = constant_property((0, 0, 0), 0.5, unit=1.0)
+ctf = prop.GetRGBTransferFunction()  # one colour a value: 0 blue, 1 green, 2 red
+ctf.RemoveAllPoints()
 ctf.AddRGBPoint(0, 0, 0, 1)
 ctf.AddRGBPoint(1, 0, 1, 0)
 ctf.AddRGBPoint(2, 1, 0, 0)
-otf = vtkPiecewiseFunction()
-otf.AddPoint(0, 0.5)
-otf.AddPoint(2, 0.5)
-prop = vtkVolumeProperty()
-prop.SetColor(ctf)
-prop.SetScalarOpacity(otf)
-prop.SetScalarOpacityUnitDistance(1.0)
 
 mapper = adaptivert.vtkTetRayCastMapper()
 mapper.SetInputData(grid)
@@ -77,33 +54,13 @@ def on_message(obj, event, text):
 
 mapper.AddObserver(vtkCommand.ErrorEvent, on_message)
 mapper.AddObserver(vtkCommand.WarningEvent, on_message)  # cell scalars averaged to the points
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-ren = vtkRenderer()
-ren.SetBackground(0, 0, 0)
-ren.AddVolume(volume)
-win = vtkRenderWindow()
-win.SetOffScreenRendering(1)
-win.SetSize(60, 60)
-win.AddRenderer(ren)
-cam = ren.GetActiveCamera()
-cam.ParallelProjectionOn()
-cam.SetPosition(0, 0, 10)
-cam.SetFocalPoint(0, 0, 0)
-cam.SetViewUp(0, 1, 0)
-cam.SetParallelScale(1.5)
-ren.ResetCameraClippingRange()
+volume, ren, win = offscreen_scene(mapper, prop, 60, 60)
+look_down_z(ren, 1.5)
 
 
 def centre():
     win.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(win)
-    grab.SetInputBufferTypeToRGB()
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    img = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars()).reshape(60, 60, 3) / 255.0
+    img = grab(win) / 255.0
     return img[25:35, 25:35].reshape(-1, 3).mean(axis=0)
 
 

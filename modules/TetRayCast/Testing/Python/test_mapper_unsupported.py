@@ -5,42 +5,22 @@ does not follow them) and a warning must name each, once, however many frames ar
 unchanged default (gradient opacity 1 everywhere) is no news. An empty input (a threshold that
 keeps nothing) draws nothing without an error each frame. Needs a display (skips with exit 77).
 """
-import os
-import sys
+from mapper_scene import box_tets, constant_property, offscreen_scene, require_display
 
-if not os.environ.get("DISPLAY"):
-    print("no DISPLAY: skipped (run under xvfb-run -a)")
-    sys.exit(77)
+require_display()
 
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkUnstructuredGrid
-from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter
-from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow, vtkVolume,
-                                         vtkVolumeProperty)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkUnstructuredGrid
 
 import adaptivert
 
-image = vtkImageData()
-image.SetDimensions(4, 4, 4)
-image.AllocateScalars(10, 1)  # VTK_FLOAT
-image.GetPointData().GetScalars().Fill(1.0)
-tri = vtkDataSetTriangleFilter()
-tri.SetInputData(image)
-tri.Update()
-ctf = vtkColorTransferFunction()
-ctf.AddRGBPoint(0, 1, 1, 1)
-otf = vtkPiecewiseFunction()
-otf.AddPoint(0, 0.3)
-otf.AddPoint(2, 0.3)
-prop = vtkVolumeProperty()
-prop.SetColor(ctf)
-prop.SetScalarOpacity(otf)
+box = box_tets(points=4, origin=(0, 0, 0), spacing=1.0)
+prop = constant_property((1, 1, 1), 0.3)
 
 mapper = adaptivert.vtkTetRayCastMapper()
-mapper.SetInputData(tri.GetOutput())
+mapper.SetInputData(box)
 warnings = []
 
 
@@ -51,15 +31,7 @@ def on_warning(obj, event, text):
 
 mapper.AddObserver(vtkCommand.WarningEvent, on_warning)
 mapper.AddObserver(vtkCommand.ErrorEvent, on_warning)
-volume = vtkVolume()
-volume.SetMapper(mapper)
-volume.SetProperty(prop)
-ren = vtkRenderer()
-ren.AddVolume(volume)
-win = vtkRenderWindow()
-win.SetOffScreenRendering(1)
-win.SetSize(32, 32)
-win.AddRenderer(ren)
+volume, ren, win = offscreen_scene(mapper, prop, 32, 32)
 ren.ResetCamera()
 
 
@@ -86,7 +58,7 @@ print(got[1:])
 assert len(got) == 2 and "gradient opacity" in got[1], got
 
 empty = vtkUnstructuredGrid()
-empty.SetPoints(tri.GetOutput().GetPoints())
+empty.SetPoints(box.GetPoints())
 mapper.SetInputData(empty)
 got = frames(2)
 assert len(got) == 2, got  # no error for the empty grid
