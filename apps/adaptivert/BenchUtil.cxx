@@ -56,6 +56,28 @@ BenchStats TimeRuns(int runs, const std::function<double()>& once)
   return Summarise(std::move(v));
 }
 
+std::vector<BenchStats> TimeInterleaved(int runs, const std::vector<std::function<double()>>& each)
+{
+  for (const auto& f : each)
+  {
+    f(); // warm-up
+  }
+  std::vector<std::vector<double>> t(each.size());
+  for (int i = 0; i < runs; ++i)
+  {
+    for (std::size_t k = 0; k < each.size(); ++k)
+    {
+      t[k].push_back(each[k]());
+    }
+  }
+  std::vector<BenchStats> out;
+  for (auto& v : t)
+  {
+    out.push_back(Summarise(std::move(v)));
+  }
+  return out;
+}
+
 RunInfo ThisRun()
 {
   RunInfo r;

@@ -17,6 +17,9 @@ struct BenchStats
 BenchStats Summarise(std::vector<double> v);
 /// One warm-up call, then `runs` calls; each returns the seconds it measured.
 BenchStats TimeRuns(int runs, const std::function<double()>& once);
+/// Several methods timed in turn: a warm-up call of each, then `runs` rounds of one call of each.
+/// A machine whose speed drifts slows them alike, so their ratios hold.
+std::vector<BenchStats> TimeInterleaved(int runs, const std::vector<std::function<double()>>& each);
 /// What a result belongs to: the source tree (its chart scripts live there), its short commit
 /// ("" outside a git checkout), the CPU's model name and the UTC time of the run.
 struct RunInfo

@@ -95,45 +95,57 @@ vtkSmartPointer<vtkUnstructuredGrid> ToGrid(const art::TetMesh& m)
   return ug;
 }
 
-// Renders `mapper` in an offscreen window with the shared camera: median seconds and the image.
-cli::BenchStats RenderVTK(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* prop, vtkCamera* cam, int w, int h, int runs,
-  art::Image& img)
+// A VTK volume mapper in its own offscreen window with the shared camera: timed a frame at a
+// time (its cached image dropped first), then read back.
+class VTKWindow
 {
-  vtkNew<vtkVolume> vol;
-  vol->SetMapper(mapper);
-  vol->SetProperty(prop);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(0, 0, 0);
-  ren->AddVolume(vol);
-  ren->SetActiveCamera(cam);
-  vtkNew<vtkRenderWindow> win;
-  win->SetOffScreenRendering(1);
-  win->SetSize(w, h);
-  win->AddRenderer(ren);
-  const cli::BenchStats s = cli::TimeRuns(runs, [&] {
-    vol->Modified(); // no cached image
-    const auto t0 = std::chrono::steady_clock::now();
-    win->Render();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  });
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(win);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkDataArray* px = grab->GetOutput()->GetPointData()->GetScalars();
-  img = art::Image(w, h);
-  for (int y = 0; y < h; ++y)
+public:
+  VTKWindow(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* prop, vtkCamera* cam, int w, int h)
+    : W(w), H(h)
   {
-    for (int x = 0; x < w; ++x)
-    {
-      const vtkIdType i = static_cast<vtkIdType>(h - 1 - y) * w + x;
-      img.Set(x, y, { float(px->GetComponent(i, 0) / 255.0), float(px->GetComponent(i, 1) / 255.0),
-                      float(px->GetComponent(i, 2) / 255.0), 1.f });
-    }
+    Vol->SetMapper(mapper);
+    Vol->SetProperty(prop);
+    Ren->SetBackground(0, 0, 0);
+    Ren->AddVolume(Vol);
+    Ren->SetActiveCamera(cam);
+    Win->SetOffScreenRendering(1);
+    Win->SetSize(w, h);
+    Win->AddRenderer(Ren);
   }
-  return s;
-}
+  double Frame()
+  {
+    Vol->Modified(); // no cached image
+    const auto t0 = std::chrono::steady_clock::now();
+    Win->Render();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  art::Image Read()
+  {
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(Win);
+    grab->SetInputBufferTypeToRGB();
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    vtkDataArray* px = grab->GetOutput()->GetPointData()->GetScalars();
+    art::Image img(W, H);
+    for (int y = 0; y < H; ++y)
+    {
+      for (int x = 0; x < W; ++x)
+      {
+        const vtkIdType i = static_cast<vtkIdType>(H - 1 - y) * W + x;
+        img.Set(x, y, { float(px->GetComponent(i, 0) / 255.0), float(px->GetComponent(i, 1) / 255.0),
+                        float(px->GetComponent(i, 2) / 255.0), 1.f });
+      }
+    }
+    return img;
+  }
+
+private:
+  int W, H;
+  vtkNew<vtkVolume> Vol;
+  vtkNew<vtkRenderer> Ren;
+  vtkNew<vtkRenderWindow> Win;
+};
 
 void Declare(cli::Options& o)
 {
@@ -236,9 +248,27 @@ int Run(const cli::Options& o)
       r.method.c_str(), r.mesh.c_str(), r.tets, r.seconds.median, r.seconds.lo, r.seconds.hi, r.err.psnr, r.err.ssim);
     rows.push_back(r);
   };
+  // Per mesh, every method is timed in turn, a frame each per round (TimeInterleaved): this
+  // machine's speed drifts, and runs of one method after another would put the drift into the
+  // ratios.
   for (const auto& me : meshes)
   {
     const art::TetMesh& m = *me.mesh;
+    const std::string file = [&] {
+      std::string f = me.name;
+      std::replace(f.begin(), f.end(), ' ', '-');
+      return f;
+    }();
+    struct Method
+    {
+      Row row;
+      std::function<double()> frame;
+      std::function<void(Row&)> finish; // error figures (and images) once timed
+    };
+    std::vector<Method> methods;
+    auto row = [&](const char* name) {
+      return Row{ name, me.name, static_cast<long long>(m.NumberOfTets()), static_cast<long long>(m.NumberOfPoints()) };
+    };
     struct Variant
     {
       const char* name;
@@ -246,6 +276,13 @@ int Run(const cli::Options& o)
       double ert;
       bool skip = true;
     };
+    struct Ours
+    {
+      std::unique_ptr<art::TetRayCaster> caster;
+      art::Image img;
+      art::RenderStats st;
+    };
+    std::vector<std::unique_ptr<Ours>> ours;
     for (const Variant& v : { Variant{ "ours exact, ERT 0.99", art::RenderSettings::Rule::Exact, 0.99 },
            Variant{ "ours exact, no ERT", art::RenderSettings::Rule::Exact, 2.0 },
            Variant{ "ours trapezoid, ERT 0.99", art::RenderSettings::Rule::Trapezoid, 0.99 },
@@ -256,50 +293,61 @@ int Run(const cli::Options& o)
       s.rule = v.rule;
       s.earlyTermination = v.ert;
       s.skipEmpty = v.skip; // "every tet": without empty-space skipping
-      const art::TetRayCaster caster(m, s);
-      art::Image img;
-      art::RenderStats st;
-      Row r{ v.name, me.name, static_cast<long long>(m.NumberOfTets()), static_cast<long long>(m.NumberOfPoints()) };
-      r.seconds = cli::TimeRuns(runs, [&] {
-        st = caster.Render(camera, img);
-        return st.seconds;
-      });
-      r.err = art::CompareImages(OverBlack(img), ref);
-      r.tetsPerRay = st.counters.PerRay(st.counters.tetsCrossed);
-      r.nsPerTet = st.counters.tetsCrossed ? r.seconds.median * 1e9 * art::GetThreadCount() / st.counters.tetsCrossed : 0;
-      report(r);
-      if (v.ert < 1 && v.rule == art::RenderSettings::Rule::Exact && v.skip)
-      {
-        std::string file = me.name;
-        std::replace(file.begin(), file.end(), ' ', '-');
-        art::WriteImage(OverBlack(img), dir + "/tets-ours-" + file + ".png");
-      }
+      ours.push_back(std::make_unique<Ours>());
+      Ours* o = ours.back().get();
+      o->caster = std::make_unique<art::TetRayCaster>(m, s);
+      const bool keep = v.ert < 1 && v.rule == art::RenderSettings::Rule::Exact && v.skip;
+      methods.push_back({ row(v.name),
+        [&camera, o] {
+          o->st = o->caster->Render(camera, o->img);
+          return o->st.seconds;
+        },
+        [&, o, keep](Row& r) {
+          r.err = art::CompareImages(OverBlack(o->img), ref);
+          r.tetsPerRay = o->st.counters.PerRay(o->st.counters.tetsCrossed);
+          r.nsPerTet = o->st.counters.tetsCrossed
+            ? r.seconds.median * 1e9 * art::GetThreadCount() / o->st.counters.tetsCrossed : 0;
+          if (keep)
+          {
+            art::WriteImage(OverBlack(o->img), dir + "/tets-ours-" + file + ".png");
+          }
+        } });
     }
+    vtkSmartPointer<vtkUnstructuredGrid> grid;
+    vtkNew<vtkUnstructuredGridVolumeRayCastMapper> bunyk;
+    vtkNew<vtkTetRayCastMapper> mapper;
+    std::unique_ptr<VTKWindow> bunykWin, mapperWin;
     if (vtk && static_cast<long long>(m.NumberOfTets()) <= o.GetInt("tets-bunyk-max"))
     {
-      auto grid = ToGrid(m);
-      vtkNew<vtkUnstructuredGridVolumeRayCastMapper> bunyk;
+      grid = ToGrid(m);
       bunyk->SetInputData(grid);
       bunyk->SetAutoAdjustSampleDistances(0);
       bunyk->SetImageSampleDistance(1.0f);
-      art::Image img;
-      Row r{ "VTK Bunyk (UG ray cast)", me.name, static_cast<long long>(m.NumberOfTets()),
-        static_cast<long long>(m.NumberOfPoints()) };
-      r.seconds = RenderVTK(bunyk, prop, cam, W, H, runs, img);
-      r.err = art::CompareImages(img, ref);
-      report(r);
-      std::string file = me.name;
-      std::replace(file.begin(), file.end(), ' ', '-');
-      art::WriteImage(img, dir + "/tets-bunyk-" + file + ".png");
+      bunykWin = std::make_unique<VTKWindow>(bunyk, prop, cam, W, H);
+      methods.push_back({ row("VTK Bunyk (UG ray cast)"), [&] { return bunykWin->Frame(); },
+        [&](Row& r) {
+          const art::Image img = bunykWin->Read();
+          r.err = art::CompareImages(img, ref);
+          art::WriteImage(img, dir + "/tets-bunyk-" + file + ".png");
+        } });
       // Ours the same way, mapper against mapper: window draw and read-back included.
-      vtkNew<vtkTetRayCastMapper> mapper;
       mapper->SetInputData(grid);
       mapper->SetAutoAdjustSampleDistances(0); // one ray a pixel, as Bunyk's
-      Row q{ "ours mapper in a window", me.name, static_cast<long long>(m.NumberOfTets()),
-        static_cast<long long>(m.NumberOfPoints()) };
-      q.seconds = RenderVTK(mapper, prop, cam, W, H, runs, img);
-      q.err = art::CompareImages(img, ref);
-      report(q);
+      mapperWin = std::make_unique<VTKWindow>(mapper, prop, cam, W, H);
+      methods.push_back({ row("ours mapper in a window"), [&] { return mapperWin->Frame(); },
+        [&](Row& r) { r.err = art::CompareImages(mapperWin->Read(), ref); } });
+    }
+    std::vector<std::function<double()>> frames;
+    for (const Method& me2 : methods)
+    {
+      frames.push_back(me2.frame);
+    }
+    const std::vector<cli::BenchStats> times = cli::TimeInterleaved(runs, frames);
+    for (std::size_t i = 0; i < methods.size(); ++i)
+    {
+      methods[i].row.seconds = times[i];
+      methods[i].finish(methods[i].row);
+      report(methods[i].row);
     }
   }
   if (vtk)
@@ -309,9 +357,10 @@ int Run(const cli::Options& o)
     fp->SetAutoAdjustSampleDistances(0);
     fp->SetImageSampleDistance(1.0f);
     fp->SetSampleDistance(0.5 * std::min(spacing[0], std::min(spacing[1], spacing[2])));
-    art::Image img;
+    VTKWindow win(fp, prop, cam, W, H);
     Row r{ "VTK FixedPoint (voxels)", "voxels", 0, voxels };
-    r.seconds = RenderVTK(fp, prop, cam, W, H, runs, img);
+    r.seconds = cli::TimeRuns(runs, [&] { return win.Frame(); });
+    const art::Image img = win.Read();
     r.err = art::CompareImages(img, ref);
     report(r);
     art::WriteImage(img, dir + "/tets-fixedpoint.png");
