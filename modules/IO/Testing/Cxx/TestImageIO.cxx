@@ -124,7 +124,9 @@ TEST(ImageIO, OpenImageIOIsLoadedOnlyForOtherFormats)
 
 TEST(ImageIO, FailedWriteLeavesExistingFileAndNoTemp)
 {
-  const std::string dir = TempDir();
+  // Its own folder: ctest runs the other tests at the same time, and their temporaries would count.
+  const std::string dir = TempDir() + "/failed-write";
+  fs::create_directories(dir);
   const std::string p = dir + "/keep.png";
   art::WriteImage(Image(4, 4, { 1, 0, 0, 1 }), p);
   const auto before = fs::file_size(p);
