@@ -395,7 +395,7 @@ int Run(const cli::Options& o)
      << (o.Flag("tets-plain-reduction") ? " (plain L2 reduction)" : " (reduction weighted by its opacity)")
      << ", reference: voxel ray caster (trilinear, 2 samples/voxel, exact steps, no ERT; " << refStats.seconds
      << " s). " << cpu << ", " << art::GetThreadCount() << " threads, commit " << commit << ", " << date
-     << ". Times: median of " << runs << " runs after a warm-up [min-max].\n\n"
+     << ". Times: median of " << runs << " runs after a warm-up [min-max]; a mesh's methods are timed in turn, one frame each per round.\n\n"
      << "| method | mesh | tets | vertices (% of voxels) | time s [min-max] | PSNR dB | SSIM | RMSE | tets/ray | ns/tet crossed/thread |\n"
      << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   char line[512];
