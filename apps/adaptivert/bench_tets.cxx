@@ -338,9 +338,9 @@ int Run(const cli::Options& o)
         [&](Row& r) { r.err = art::CompareImages(mapperWin->Read(), ref); } });
     }
     std::vector<std::function<double()>> frames;
-    for (const Method& me2 : methods)
+    for (const Method& method : methods)
     {
-      frames.push_back(me2.frame);
+      frames.push_back(method.frame);
     }
     const std::vector<cli::BenchStats> times = cli::TimeInterleaved(runs, frames);
     for (std::size_t i = 0; i < methods.size(); ++i)
