@@ -1,45 +1,29 @@
 #include "DataLoader.h"
-#include "ArrayChoice.h"
-#include "CellVoxels.h"
 #include "AtomicFile.h"
-#include "DicomSeries.h"
 #include "Error.h"
-#include "MetaImageCheck.h"
-#include "NiftiCheck.h"
-#include "NrrdCheck.h"
 #include "ObjReader.h"
 #include "PlyCheck.h"
+#include "ReaderRun.h"
 #include "StlCheck.h"
-#include "VolumePlacement.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkAppendFilter.h>
-#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
-#include <vtkDICOMImageReader.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetAttributes.h>
 #include <vtkDataSetReader.h>
-#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
-#include <vtkExecutive.h>
 #include <vtkImageData.h>
-#include <vtkMatrix3x3.h>
-#include <vtkMetaImageReader.h>
-#include <vtkNIFTIImageReader.h>
 #include <vtkNew.h>
-#include <vtkNrrdReader.h>
 #include <vtkPLYReader.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 #include <vtkUnstructuredGrid.h>
-#include <vtkXMLImageDataReader.h>
-#include <vtkXMLPImageDataReader.h>
 #include <vtkXMLPPolyDataReader.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLRectilinearGridReader.h>
@@ -78,92 +62,6 @@ const std::set<std::string> SurfaceExt = { ".ply", ".obj", ".stl", ".vtp", ".pvt
 // write them, are read whole: every piece or block appended into one grid.
 const std::set<std::string> MeshExt = { ".vtu", ".vts", ".vtr", ".pvtu", ".pvts", ".pvtr", ".vtm" };
 
-// Keeps the first error a VTK object reports instead of letting it reach the output window.
-struct ErrorCatcher
-{
-  std::string Message;
-  vtkNew<vtkCallbackCommand> Cmd;
-
-  explicit ErrorCatcher(vtkAlgorithm* alg)
-  {
-    Cmd->SetClientData(this);
-    Cmd->SetCallback([](vtkObject*, unsigned long event, void* self, void* data) {
-      auto* me = static_cast<ErrorCatcher*>(self);
-      if (event == vtkCommand::ErrorEvent && me->Message.empty() && data)
-      {
-        me->Message = Clean(static_cast<const char*>(data));
-      }
-    });
-    alg->AddObserver(vtkCommand::ErrorEvent, Cmd);
-    alg->AddObserver(vtkCommand::WarningEvent, Cmd);
-    alg->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, Cmd);
-  }
-  // VTK messages carry "ERROR: In file, line N\nclass (0x..): text"; keep only the text.
-  static std::string Clean(std::string m)
-  {
-    auto p = m.rfind("): ");
-    if (p != std::string::npos)
-    {
-      m = m.substr(p + 3);
-    }
-    while (!m.empty() && (m.back() == '\n' || m.back() == ' ' || m.back() == '\r'))
-    {
-      m.pop_back();
-    }
-    for (char& c : m)
-    {
-      c = (c == '\n') ? ' ' : c;
-    }
-    return m;
-  }
-};
-
-void RequireFile(const std::string& path, bool allowDirectory)
-{
-  std::error_code ec;
-  if (path.empty())
-  {
-    throw Error("empty file name");
-  }
-  if (!fs::exists(path, ec))
-  {
-    throw Error("no such file or directory", path);
-  }
-  if (fs::is_directory(path, ec) && !allowDirectory)
-  {
-    throw Error("is a directory, expected a file", path);
-  }
-  if (!fs::is_directory(path, ec) && fs::file_size(path, ec) == 0)
-  {
-    throw Error("file is empty", path);
-  }
-}
-
-void RunReader(vtkAlgorithm* reader, const std::string& path)
-{
-  ErrorCatcher catcher(reader);
-  try
-  {
-    reader->Update();
-  }
-  catch (const std::bad_alloc&)
-  {
-    throw Error("out of memory while reading it (are the header's sizes right?)", path);
-  }
-  if (!catcher.Message.empty())
-  {
-    throw Error("cannot read: " + catcher.Message, path);
-  }
-}
-
-template <class Reader>
-vtkSmartPointer<vtkAlgorithm> FileReader(const std::string& path)
-{
-  auto r = vtkSmartPointer<Reader>::New();
-  r->SetFileName(path.c_str());
-  return r;
-}
-
 void CheckPolyIndices(vtkPolyData* pd, const std::string& path)
 {
   const vtkIdType n = pd->GetNumberOfPoints();
@@ -187,27 +85,6 @@ void CheckPolyIndices(vtkPolyData* pd, const std::string& path)
     }
   }
 }
-// A DICOM Part 10 file has "DICM" at byte 128; vtkDICOMImageReader gives no useful message
-// for a folder without one.
-bool HasDicomFile(const std::string& dir)
-{
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(dir, ec))
-  {
-    if (!entry.is_regular_file(ec))
-    {
-      continue;
-    }
-    std::ifstream in(entry.path(), std::ios::binary);
-    char magic[4] = {};
-    if (in.seekg(128) && in.read(magic, 4) && std::string(magic, 4) == "DICM")
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
 // A legacy .vtk file may hold any data set: its header says which.
 DataKind LegacyKind(const std::string& path)
 {
@@ -232,181 +109,6 @@ DataKind LegacyKind(const std::string& path)
   }
 }
 
-// VTK 9.1's vtkXMLPImageDataReader leaves the direction at the identity, and its writer leaves it
-// out of the .pvti (its pieces keep it): a turned image saved in pieces loaded unturned. The
-// direction is taken from the .pvti (as later VTK writes it), else from its first piece.
-bool PvtiDirection(const std::string& path, double dir[9])
-{
-  auto attribute = [](const std::string& file, const char* element, const char* name) -> std::string {
-    std::ifstream in(file, std::ios::binary);
-    std::string head(1 << 16, '\0');
-    in.read(&head[0], static_cast<std::streamsize>(head.size()));
-    head.resize(static_cast<std::size_t>(in.gcount()));
-    const std::size_t e = head.find(std::string("<") + element);
-    const std::size_t end = e == std::string::npos ? e : head.find('>', e);
-    if (end == std::string::npos)
-    {
-      return {};
-    }
-    const std::string tag = head.substr(e, end - e);
-    const std::string key = std::string(" ") + name + "=\"";
-    const std::size_t a = tag.find(key);
-    const std::size_t q = a == std::string::npos ? a : tag.find('"', a + key.size());
-    return q == std::string::npos ? std::string() : tag.substr(a + key.size(), q - a - key.size());
-  };
-  std::string text = attribute(path, "PImageData", "Direction");
-  if (text.empty())
-  {
-    const std::string piece = attribute(path, "Piece", "Source");
-    if (piece.empty())
-    {
-      return false;
-    }
-    const fs::path p = fs::path(piece).is_absolute() ? fs::path(piece) : fs::path(path).parent_path() / piece;
-    text = attribute(p.string(), "ImageData", "Direction");
-  }
-  std::istringstream in(text);
-  for (int i = 0; i < 9; ++i)
-  {
-    if (!(in >> dir[i]))
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-// Makes `name` the active scalars of `pd`; without a name keeps the active scalars, or takes the
-// first one-component array when none is active (XML files need not mark one).
-void SelectScalars(vtkPointData* pd, const std::string& name, const std::string& path)
-{
-  vtkDataArray* a = ChooseArray(pd, name, true); // SetActiveScalars needs the name
-  if (!a && !name.empty())
-  {
-    throw Error("has no point array '" + name + "' (it has: " + ArrayNames({ pd }) + ")", path);
-  }
-  if (a && a != pd->GetScalars())
-  {
-    pd->SetActiveScalars(a->GetName());
-  }
-}
-
-// An image whose values are on its cells (voxel-centred data: labels, a finite-volume simulation)
-// and not on its points "held no voxels". Its cells become the voxels, placed at the cell centres.
-vtkSmartPointer<vtkImageData> CellsAsVoxels(vtkImageData* img, const std::string& name)
-{
-  vtkPointData* pd = img->GetPointData();
-  vtkCellData* cd = img->GetCellData();
-  const bool onPoints = name.empty() ? ChooseArray(pd, "", true) != nullptr : pd->GetArray(name.c_str()) != nullptr;
-  const bool onCells = name.empty() ? ChooseArray(cd, "", true) != nullptr : cd->GetArray(name.c_str()) != nullptr;
-  if (onPoints || !onCells)
-  {
-    return img;
-  }
-  return CellVoxels(img, cd);
-}
-
-// NIfTI stores values as slope * stored + intercept (a CT in Hounsfield units is often uint16 with
-// intercept -1024); vtkNIFTIImageReader reports the pair but leaves the voxels as stored (unlike
-// vtkDICOMImageReader, which applies its own). A zero or non-finite slope means no scaling, as in
-// nifti1_io.
-void ApplyRescale(vtkImageData* img, double slope, double intercept)
-{
-  vtkDataArray* in = img->GetPointData()->GetScalars();
-  if (!in || slope == 0 || !std::isfinite(slope) || !std::isfinite(intercept) || (slope == 1 && intercept == 0))
-  {
-    return;
-  }
-  // Float holds 16-bit values scaled exactly enough; wider types keep double.
-  vtkSmartPointer<vtkDataArray> out = in->GetDataTypeSize() <= 2 ? vtkSmartPointer<vtkDataArray>(vtkSmartPointer<vtkFloatArray>::New())
-                                                                  : vtkSmartPointer<vtkDataArray>(vtkSmartPointer<vtkDoubleArray>::New());
-  out->SetName(in->GetName());
-  out->SetNumberOfComponents(in->GetNumberOfComponents());
-  out->SetNumberOfTuples(in->GetNumberOfTuples());
-  for (vtkIdType t = 0; t < in->GetNumberOfTuples(); ++t)
-  {
-    for (int c = 0; c < in->GetNumberOfComponents(); ++c)
-    {
-      out->SetComponent(t, c, slope * in->GetComponent(t, c) + intercept);
-    }
-  }
-  img->GetPointData()->SetScalars(out);
-}
-
-// vtkDICOMImageReader (VTK 9.1) stores the rows bottom-up and the slices from the last along the
-// slice normal n = row x column cosines, reports the first slice's ImagePositionPatient, takes
-// PixelSpacing's (row, column) pair as (x, y), and leaves origin 0 and no direction. Put each voxel
-// where the patient coordinates say (as ITK and a MetaImage of the same series do): columns
-// along r, rows along -c, slices along -n from the far corner; x spacing is the column spacing.
-void ApplyDicomGeometry(vtkImageData* img, vtkDICOMImageReader* r)
-{
-  const float* iop = r->GetImageOrientationPatient();
-  const float* ipp = r->GetImagePositionPatient();
-  if (!iop || !ipp)
-  {
-    return;
-  }
-  const double rc[3] = { iop[0], iop[1], iop[2] }, cc[3] = { iop[3], iop[4], iop[5] };
-  const double rr = rc[0] * rc[0] + rc[1] * rc[1] + rc[2] * rc[2];
-  const double ccc = cc[0] * cc[0] + cc[1] * cc[1] + cc[2] * cc[2];
-  const double rdc = rc[0] * cc[0] + rc[1] * cc[1] + rc[2] * cc[2];
-  if (std::abs(rr - 1) > 1e-3 || std::abs(ccc - 1) > 1e-3 || std::abs(rdc) > 1e-3)
-  {
-    return; // no (or no usable) orientation: keep VTK's layout
-  }
-  const double n[3] = { rc[1] * cc[2] - rc[2] * cc[1], rc[2] * cc[0] - rc[0] * cc[2], rc[0] * cc[1] - rc[1] * cc[0] };
-  const double* sp = img->GetSpacing();
-  const double sx = sp[1], sy = sp[0], sz = sp[2];
-  int d[3];
-  img->GetDimensions(d);
-  double origin[3];
-  for (int a = 0; a < 3; ++a)
-  {
-    origin[a] = ipp[a] + (d[1] - 1) * sy * cc[a] + (d[2] - 1) * sz * n[a];
-  }
-  img->SetSpacing(sx, sy, sz);
-  img->SetOrigin(origin);
-  img->SetDirectionMatrix(rc[0], -cc[0], -n[0], rc[1], -cc[1], -n[1], rc[2], -cc[2], -n[2]);
-}
-
-// VTK's XML and legacy readers keep a negative spacing (a flipped axis, as some tools write one),
-// which the voxel reference took as positive: it rendered the volume mirrored against the reduced
-// mesh (8 dB apart). The sign moves into the direction matrix, placing every voxel where it was.
-// A zero or non-finite spacing along an axis of several voxels puts them all in one plane.
-void MakeSpacingPositive(vtkImageData* img, const std::string& path)
-{
-  double sp[3];
-  img->GetSpacing(sp);
-  int d[3];
-  img->GetDimensions(d);
-  double dir[9];
-  std::copy_n(img->GetDirectionMatrix()->GetData(), 9, dir);
-  bool flipped = false;
-  for (int a = 0; a < 3; ++a)
-  {
-    if (d[a] > 1 && !(std::abs(sp[a]) > 0 && std::isfinite(sp[a])))
-    {
-      std::ostringstream what;
-      what << "spacing along " << "xyz"[a] << " is " << sp[a]
-           << "; it must be finite and non-zero (the voxels of that axis would lie in one plane)";
-      throw Error(what.str(), path);
-    }
-    if (sp[a] < 0)
-    {
-      sp[a] = -sp[a];
-      for (int r = 0; r < 3; ++r)
-      {
-        dir[3 * r + a] = -dir[3 * r + a];
-      }
-      flipped = true;
-    }
-  }
-  if (flipped)
-  {
-    img->SetSpacing(sp);
-    img->SetDirectionMatrix(dir);
-  }
-}
 } // namespace
 
 // A time series (a ParaView .pvd collection, as ParaView, FEniCS, deal.II and foamToVTK write
@@ -497,131 +199,6 @@ DataKind KindOf(const std::string& path)
       "' (volumes: .mha .mhd .nii .nii.gz .vti .pvti .nrrd or a DICOM folder; surfaces: .ply .obj "
       ".stl .vtp .pvtp; meshes: .vtu .vts .vtr, their parallel .pvtu .pvts .pvtr, .vtm; any of them: legacy .vtk)",
     path);
-}
-
-vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::string& array)
-{
-  if (KindOf(path) != DataKind::Volume)
-  {
-    throw Error("is not a volume (expected .mha .mhd .nii .nii.gz .vti .pvti .nrrd, image data in .vtk, or a DICOM folder)",
-      path);
-  }
-  std::error_code ec;
-  const std::string e = LowerExtension(path);
-  vtkSmartPointer<vtkAlgorithm> reader;
-  std::unique_ptr<DicomLinkFolder> series; // lives until the reader has read
-  if (fs::is_directory(path, ec))
-  {
-    if (!HasDicomFile(path))
-    {
-      throw Error("folder holds no readable DICOM series", path);
-    }
-    // vtkDICOMImageReader reads every series in a folder as one: give it one (DicomSeries.h).
-    int seriesInFolder = 0;
-    const std::vector<std::string> files = DicomSeriesFiles(path, &seriesInFolder);
-    auto r = vtkSmartPointer<vtkDICOMImageReader>::New();
-    if (seriesInFolder > 1)
-    {
-      series = std::make_unique<DicomLinkFolder>(files);
-    }
-    r->SetDirectoryName(series ? series->Path().c_str() : path.c_str());
-    reader = r;
-  }
-  else if (e == ".mha" || e == ".mhd")
-  {
-    CheckMetaImage(path);
-    reader = FileReader<vtkMetaImageReader>(path);
-  }
-  else if (e == ".nii" || e == ".nii.gz")
-  {
-    CheckNifti(path);
-    reader = FileReader<vtkNIFTIImageReader>(path);
-  }
-  else if (e == ".vti")
-  {
-    reader = FileReader<vtkXMLImageDataReader>(path);
-  }
-  else if (e == ".pvti")
-  {
-    reader = FileReader<vtkXMLPImageDataReader>(path);
-  }
-  else if (e == ".vtk")
-  {
-    reader = FileReader<vtkDataSetReader>(path);
-  }
-  else
-  {
-    CheckNrrd(path);
-    reader = FileReader<vtkNrrdReader>(path);
-  }
-  RunReader(reader, path);
-  auto img = vtkSmartPointer<vtkImageData>::New();
-  img->ShallowCopy(reader->GetOutputDataObject(0));
-  double direction[9];
-  if (e == ".pvti" && PvtiDirection(path, direction))
-  {
-    img->SetDirectionMatrix(direction); // before cell centres are placed
-  }
-  img = CellsAsVoxels(img, array);
-  SelectScalars(img->GetPointData(), array, path);
-  if (vtkMetaImageReader::SafeDownCast(reader) && MetaImageDirection(path, direction))
-  {
-    img->SetDirectionMatrix(direction);
-  }
-  if (e == ".nrrd" || e == ".nhdr")
-  {
-    if (vtkDataArray* s = img->GetPointData()->GetScalars())
-    {
-      ReadNrrdText(path, s); // VTK read text data as zeros
-    }
-    img = PlaceNrrd(img, path);
-  }
-  if (auto* dicom = vtkDICOMImageReader::SafeDownCast(reader))
-  {
-    ApplyDicomGeometry(img, dicom);
-  }
-  if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(reader))
-  {
-    ApplyRescale(img, nifti->GetRescaleSlope(), nifti->GetRescaleIntercept());
-    PlaceNifti(img, nifti, path);
-  }
-  MakeSpacingPositive(img, path);
-  int dims[3];
-  img->GetDimensions(dims);
-  if (dims[0] <= 0 || dims[1] <= 0 || dims[2] <= 0 || !img->GetPointData()->GetScalars())
-  {
-    if (fs::is_directory(path, ec))
-    {
-      throw Error("folder holds no readable DICOM series", path);
-    }
-    // Voxels without values said "holds no voxels (empty or unreadable volume)" too.
-    if (img->GetNumberOfPoints() > 0 && img->GetPointData()->GetNumberOfArrays() > 0)
-    {
-      throw Error("has no one-component point array to take as the voxels (point arrays: " +
-          ArrayNames({ img->GetPointData() }) + "; extract a component first)",
-        path);
-    }
-    if (img->GetNumberOfPoints() > 0)
-    {
-      vtkFieldData* fd = img->GetFieldData();
-      throw Error(std::string("has ") + std::to_string(img->GetNumberOfPoints()) + " voxels but no values on them" +
-          (fd && fd->GetNumberOfArrays() > 0 ? " (only field data: " + ArrayNames({ fd }) + ")" : ""),
-        path);
-    }
-    throw Error("holds no voxels (empty or unreadable volume)", path);
-  }
-  return img;
-}
-
-void RequireOneComponent(vtkImageData* volume, const std::string& path)
-{
-  vtkDataArray* s = volume->GetPointData()->GetScalars();
-  if (const int nc = s ? s->GetNumberOfComponents() : 0; nc != 1)
-  {
-    throw Error("the scalars have " + std::to_string(nc) +
-        " components; rendering needs one (pick a one-component array with --array, or extract a component)",
-      path);
-  }
 }
 
 vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
