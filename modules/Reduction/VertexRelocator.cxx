@@ -49,27 +49,27 @@ public:
   {
     std::vector<double> per(static_cast<size_t>(Mesh.NumberOfTets()));
     ForEachRange(Mesh.NumberOfTets(), 256, [&](long long t0, long long t1, Counters&) {
-    for (int t = static_cast<int>(t0); t < t1; ++t)
-    {
-      double s = 0;
-      LatticePoint P[4];
-      double c[4];
-      for (int a = 0; a < 4; ++a)
+      for (int t = static_cast<int>(t0); t < t1; ++t)
       {
-        P[a] = Mesh.Vertex(Mesh.Tet(t)[a]);
-        c[a] = X[Mesh.Tet(t)[a]];
+        double s = 0;
+        LatticePoint P[4];
+        double c[4];
+        for (int a = 0; a < 4; ++a)
+        {
+          P[a] = Mesh.Vertex(Mesh.Tet(t)[a]);
+          c[a] = X[Mesh.Tet(t)[a]];
+        }
+        TetRaster r;
+        if (!r.Setup(P))
+        {
+          throw Error("internal: a flat tetrahedron after relocation");
+        }
+        r.ForEachVoxel(Vol.Dims, [&](long long idx, const double* l) {
+          const double f = Vol.Value(idx), u = c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3];
+          s += Imp ? Imp->Error2(idx, f, u) : (f - u) * (f - u);
+        });
+        per[t] = s;
       }
-      TetRaster r;
-      if (!r.Setup(P))
-      {
-        throw Error("internal: a flat tetrahedron after relocation");
-      }
-      r.ForEachVoxel(Vol.Dims, [&](long long idx, const double* l) {
-        const double f = Vol.Value(idx), u = c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3];
-        s += Imp ? Imp->Error2(idx, f, u) : (f - u) * (f - u);
-      });
-      per[t] = s;
-    }
     });
     double s = 0;
     for (double e : per)
@@ -451,6 +451,19 @@ private:
     return s;
   }
 
+  // Tet t's fitted values at its corners with v's left out (0), and v's corner in t.
+  int Others(int t, int v, double c[4]) const
+  {
+    int vi = 0;
+    for (int a = 0; a < 4; ++a)
+    {
+      const int w = Mesh.Tet(t)[a];
+      c[a] = w == v ? 0.0 : X[w];
+      vi = w == v ? a : vi;
+    }
+    return vi;
+  }
+
   // The star's squared error with v at q and its value refitted (the others fixed). With
   // `checked`, false when a tet would flip, flatten or fall below the quality floor.
   // `stride` 0: exactly, every voxel (TetRaster); -1: exactly at v's current place, from the
@@ -480,13 +493,7 @@ private:
       {
         const int t = Star[i];
         double c[4];
-        int vi = 0;
-        for (int a = 0; a < 4; ++a)
-        {
-          const int w = Mesh.Tet(t)[a];
-          c[a] = w == v ? 0.0 : X[w];
-          vi = w == v ? a : vi;
-        }
+        const int vi = Others(t, v, c);
         const double* m = &Moments[static_cast<size_t>(t) * NM];
         if (stride == 0)
         {
@@ -509,13 +516,7 @@ private:
       LatticePoint P[4];
       Corners(t, v, q, P);
       double c[4];
-      int vi = 0;
-      for (int a = 0; a < 4; ++a)
-      {
-        const int w = Mesh.Tet(t)[a];
-        c[a] = w == v ? 0.0 : X[w];
-        vi = w == v ? a : vi;
-      }
+      const int vi = Others(t, v, c);
       Vol.WithSamples([&](const auto* values) {
         auto add = [&](long long idx, const double* l) {
           const double res = values[idx] - (c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3]);
