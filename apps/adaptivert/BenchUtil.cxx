@@ -47,13 +47,7 @@ BenchStats Summarise(std::vector<double> v)
 
 BenchStats TimeRuns(int runs, const std::function<double()>& once)
 {
-  once(); // warm-up
-  std::vector<double> v;
-  for (int i = 0; i < runs; ++i)
-  {
-    v.push_back(once());
-  }
-  return Summarise(std::move(v));
+  return TimeInterleaved(runs, { once }).front();
 }
 
 std::vector<BenchStats> TimeInterleaved(int runs, const std::vector<std::function<double()>>& each)
