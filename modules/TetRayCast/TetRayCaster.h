@@ -3,8 +3,8 @@
 // camera's rays), emission-absorption per segment with the exact or the trapezoid rule
 // (ExactIntegrator), iso-surfaces with Phong-shaded interpolated vertex gradients, maximum
 // intensity, early ray termination, empty-space skipping (only tets the transfer function can
-// show are walked). Non-convex meshes are integrated over every piece the ray passes through. Image tiles run over art::ForEachTile, so
-// the image is identical for any thread count.
+// show are walked). Non-convex meshes are integrated over every piece the ray passes through.
+// Image tiles run over art::ForEachTile, so the image is identical for any thread count.
 #ifndef art_TetRayCaster_h
 #define art_TetRayCaster_h
 

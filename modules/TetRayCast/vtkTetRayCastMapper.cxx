@@ -220,11 +220,11 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   // Rays are cast in the data's own coordinates when the volume's matrix is a rotation times one
   // scale (the camera goes through its inverse; segment lengths, and so the opacity unit
-  // distance, are measured in data units). Any other matrix moves the mesh's points into the
-  // world instead, rebuilt when the matrix changes: a mirror (a negative scale: the camera moved
-  // through it sees right and left swapped, and the volume was drawn on the wrong side of the
-  // view) divided by its scale, so lengths stay in data units; an anisotropic scale (SetScale(1,
-  // 1, 3) for thick slices) or a shear as it is, lengths in world units.
+  // distance, are measured in data units). Any other matrix moves the mesh's points through its
+  // linear part instead, rebuilt when that part changes: a mirror (a negative scale: the camera
+  // moved through it sees right and left swapped, and the volume was drawn on the wrong side of
+  // the view) divided by its scale, so lengths stay in data units; an anisotropic scale
+  // (SetScale(1, 1, 3) for thick slices) or a shear as it is, lengths in world units.
   vtkMatrix4x4* toWorld = vol->GetMatrix();
   vtkNew<vtkMatrix4x4> engineToWorld, meshToEngine; // the engine's mesh is meshToEngine * data
   const double scale = art::mapper::SimilarityScale(toWorld);

@@ -12,8 +12,8 @@
  * matrix is honoured: position, orientation and a uniform scale by casting in the data's
  * coordinates (lengths in data units), a mirror (negative scale) by moving the mesh through it
  * (lengths still in data units), any other matrix (SetScale(1, 1, 3) for thick slices, a shear)
- * by moving the mesh into the world (lengths in world units); such meshes are rebuilt when the
- * matrix changes. Opaque geometry in the scene ends the
+ * by moving the mesh through its linear part (lengths in world units); such meshes are rebuilt
+ * when that part changes, not when the volume only moves. Opaque geometry in the scene ends the
  * rays at its depth (IntermixIntersectingGeometry). The mapper's ScalarMode and SelectScalarArray
  * choose the field (cell values are averaged to the points); ghost cells (DUPLICATECELL in
  * vtkGhostType) are skipped, as VTK's mappers skip them. Clipping planes (AddClippingPlane,
