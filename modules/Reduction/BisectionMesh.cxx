@@ -299,10 +299,7 @@ void BisectionMesh::Bisect(int t, int mid, std::vector<int>& touched)
 }
 void BisectionMesh::MoveVertex(int v, const LatticePoint& p)
 {
-  if (!Moved)
-  {
-    Moved = true;
-  }
+  Moved = true;
   Verts[v] = p;
   for (int t : VertexTets[v])
   {
