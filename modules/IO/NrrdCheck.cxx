@@ -31,6 +31,11 @@ int NrrdTypeSize(const std::string& t)
   const auto it = sizes.find(t);
   return it == sizes.end() ? 0 : it->second;
 }
+// The detached data file a header names ("data file" or the older "datafile"), or "".
+std::string DataFileField(std::map<std::string, std::string>& keys)
+{
+  return keys.count("data file") ? keys["data file"] : keys["datafile"];
+}
 } // namespace
 
 std::map<std::string, std::string> ReadNrrdFields(std::istream& in)
@@ -76,16 +81,16 @@ void CheckNrrd(const std::string& path)
     // No blank line ends the header. vtkNrrdReader (VTK 9.1) never returned on such a file when
     // its last line had no line end (a detached .nhdr saved without a final newline).
     const bool detached = keys.count("data file") || keys.count("datafile");
+    if (!detached)
+    {
+      throw Error("the header has no blank line before its data (a NRRD header ends with an empty line)", path);
+    }
     std::ifstream last(path, std::ios::binary | std::ios::ate);
     char c = '\n';
     if (last.tellg() > 0)
     {
       last.seekg(-1, std::ios::end);
       last.get(c);
-    }
-    if (!detached)
-    {
-      throw Error("the header has no blank line before its data (a NRRD header ends with an empty line)", path);
     }
     if (c != '\n')
     {
@@ -116,11 +121,11 @@ void CheckNrrd(const std::string& path)
   }
   const int esize = NrrdTypeSize(keys["type"]);
   const std::string encoding = keys["encoding"];
-  const std::string series = keys.count("data file") ? keys["data file"] : keys["datafile"];
-  if (series.find(' ') != std::string::npos || series.find('%') != std::string::npos || series.compare(0, 4, "LIST") == 0)
+  const std::string df = DataFileField(keys);
+  if (df.find(' ') != std::string::npos || df.find('%') != std::string::npos || df.compare(0, 4, "LIST") == 0)
   {
     // vtkNrrdReader (VTK 9.1) segfaults on every file series, even a complete one.
-    throw Error("data file '" + series + "' is a series of files, which VTK's NRRD reader cannot read: join the "
+    throw Error("data file '" + df + "' is a series of files, which VTK's NRRD reader cannot read: join the "
                 "slices into one data file (unu join, or save from Slicer as one .nrrd)",
       path);
   }
@@ -150,7 +155,6 @@ void CheckNrrd(const std::string& path)
   }
   std::string dataFile = path;
   long long start = attachedStart;
-  const std::string df = keys.count("data file") ? keys["data file"] : keys["datafile"];
   if (!df.empty())
   {
     dataFile = (fs::path(df).is_absolute() ? fs::path(df) : fs::path(path).parent_path() / df).string();
@@ -182,7 +186,7 @@ bool ReadNrrdText(const std::string& path, vtkDataArray* values)
     return false;
   }
   in.clear();
-  const std::string df = keys.count("data file") ? keys["data file"] : keys["datafile"];
+  const std::string df = DataFileField(keys);
   std::ifstream detached;
   std::istream* data = &in;
   if (!df.empty())
