@@ -295,11 +295,12 @@ std::vector<std::array<double, 3>> DiffuseColours(const Obj& obj, const std::str
   std::vector<std::array<double, 3>> kd(obj.Materials.size(), { -1, -1, -1 });
   const std::size_t slash = path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+  auto beside = [&](const std::string& name) { return !name.empty() && name[0] == '/' ? name : dir + name; };
   std::vector<std::string> files;
   for (const std::string& names : obj.Libraries)
   {
     // One library, or several separated by blanks ("mtllib a.mtl b.mtl").
-    std::ifstream whole(!names.empty() && names[0] == '/' ? names : dir + names);
+    std::ifstream whole(beside(names));
     std::istringstream split(names);
     std::string one;
     while (!whole && split >> one)
@@ -313,7 +314,7 @@ std::vector<std::array<double, 3>> DiffuseColours(const Obj& obj, const std::str
   }
   for (const std::string& lib : files)
   {
-    std::ifstream in(!lib.empty() && lib[0] == '/' ? lib : dir + lib);
+    std::ifstream in(beside(lib));
     std::string line;
     int current = -1;
     while (std::getline(in, line))
