@@ -67,8 +67,8 @@ void Declare(cli::Options& o)
     "most error: thin tets along sharp surfaces, sharper images per tet, slower)",
     "bisection");
   o.Add("relocate", 0, "",
-    "after reducing, move the vertices off the bisection lattice toward the surfaces they fit (17-37% lower RMS "
-    "on the CT, sharper images; about 100x slower to reduce)");
+    "after reducing, move the vertices off the bisection lattice toward the surfaces they fit (17-35% lower RMS "
+    "on the CT, sharper images; 4-5x slower to reduce)");
   o.Add("plain-reduction", 0, "",
     "reduce in plain L2, not weighted by the transfer function's opacity (a few times faster on large volumes)");
   o.Add("reference", 0, "", "render the full-resolution voxel reference instead");

@@ -28,8 +28,8 @@
 // the six levels, 0.79 x at 200k tets, but min dihedral near 0 deg and about 3 x the time, so it
 // is not the default (figures in that README).
 // Option RelocateVertices (VertexRelocator) moves each output's vertices off the lattice onto the
-// surfaces they fit, then refits: full CT 17-32% lower RMS at the paper's levels (0.51-0.68 x
-// uniform), but about 100 x the time and min dihedral ~9 deg, so it is not the default either.
+// surfaces they fit, then refits: full CT 17-30% lower RMS at the paper's levels (0.53-0.67 x
+// uniform), but 4-5 x the time and min dihedral ~9 deg, so it is not the default either.
 #ifndef art_TetReducer_h
 #define art_TetReducer_h
 
