@@ -24,7 +24,7 @@ for i, (name, rows) in enumerate(methods.items()):
 ax.set_xscale("log")
 ax.set_xlabel("render time, s (median, log scale)")
 ax.set_ylabel("PSNR against the voxel reference, dB")
-ax.set_title(f'CT head {data["width"]}x{data["height"]}: time vs error ({data["commit"]}, {data["threads"]} threads)')
+ax.set_title(f'CT head {data["width"]}x{data["height"]}, {data["transfer_function"]}: time vs error ({data["commit"]}, {data["threads"]} threads)')
 ax.grid(True, which="both", alpha=0.3)
 ax.legend(fontsize=8)
 fig.tight_layout()
