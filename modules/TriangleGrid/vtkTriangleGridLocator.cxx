@@ -139,7 +139,19 @@ int vtkTriangleGridLocator::IntersectWithLine(const double p1[3], const double p
   pcoords[1] = h.v;
   pcoords[2] = 0;
   cellId = h.triangle;
-  if (cell)
+  if (this->DataSet->GetCellType(cellId) != VTK_TRIANGLE)
+  {
+    // u, v belong to the triangle of the cell's triangulation that was hit; a quad's, polygon's
+    // or strip's own pcoords and subId (what vtkCellPicker interpolates normals and texture
+    // coordinates with) come from the cell at the hit point.
+    vtkNew<vtkGenericCell> own;
+    vtkGenericCell* gc = cell ? cell : own.GetPointer();
+    this->DataSet->GetCell(cellId, gc);
+    std::vector<double> weights(static_cast<size_t>(gc->GetNumberOfPoints()) + 1);
+    double cp[3], d2;
+    gc->EvaluatePosition(x, cp, subId, pcoords, d2, weights.data());
+  }
+  else if (cell)
   {
     this->DataSet->GetCell(cellId, cell);
   }

@@ -10,7 +10,8 @@
  * one of its triangles.
  *
  * - IntersectWithLine(p1, p2, tol, t, x, pcoords, subId[, cellId[, cell]]): the hit nearest p1.
- *   pcoords are the barycentric weights of the hit triangle's 2nd and 3rd point.
+ *   pcoords and subId are the hit cell's own at x (for a triangle, the barycentric weights of its
+ *   2nd and 3rd point), so cell->EvaluateLocation(subId, pcoords, ...) gives back x.
  * - IntersectWithLine(p1, p2, points, cellIds): every hit along the segment, sorted from p1,
  *   one per surface where the segment crosses a shared edge or vertex. Returns 0 for no hit,
  *   otherwise -1 when p1 lies inside the closed surface and +1 when outside (by ray parity).

@@ -1,11 +1,13 @@
 // vtkTriangleGridLocator's other point and box queries: FindClosestPointWithinRadius (and its
 // inside flag), FindCellsWithinBounds equal to the exact answer (brute force) and inside VTK's bucket
-// answer, FindCell where vtkCellLocator finds a cell within tol; the rebuild rules and bad datasets.
+// answer, FindCell where vtkCellLocator finds a cell within tol; the rebuild rules and bad datasets;
+// a line hit's pcoords on quads and polygons.
 #include "LocatorTestUtil.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellLocator.h>
+#include <vtkMath.h>
 #include <vtkPoints.h>
 #include <vtkStaticCellLocator.h>
 
@@ -311,3 +313,66 @@ TEST(LocatorQueries, AnalyticInsideFlag)
   }
 }
 
+
+TEST(LocatorQueries, LineHitGivesTheCellsOwnPcoords)
+{
+  // A quad's and a polygon's pcoords are the cell's own (bilinear, the polygon's frame), not the
+  // weights in the triangle of its triangulation that was hit: vtkCellPicker interpolates the
+  // hit's normal and texture coordinates with them (quads: up to 0.5 of the cell off).
+  vtkNew<vtkPoints> hexPts;
+  for (int k = 0; k < 6; ++k)
+  {
+    hexPts->InsertNextPoint(2 * std::cos(k * M_PI / 3), 2 * std::sin(k * M_PI / 3), 0.5);
+  }
+  vtkNew<vtkCellArray> hexCell;
+  const vtkIdType h[6] = { 0, 1, 2, 3, 4, 5 };
+  hexCell->InsertNextCell(6, h);
+  vtkNew<vtkPolyData> hexagon;
+  hexagon->SetPoints(hexPts);
+  hexagon->SetPolys(hexCell);
+  vtkSmartPointer<vtkPolyData> quads = QuadPlane();
+  for (vtkPolyData* pd : { quads.GetPointer(), hexagon.GetPointer() })
+  {
+    vtkNew<vtkCellLocator> ref;
+    ref->SetDataSet(pd);
+    ref->BuildLocator();
+    double b[6];
+    pd->GetBounds(b);
+    std::mt19937_64 g(5);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int kind : Kinds)
+    {
+      auto loc = Ours(pd, kind);
+      vtkNew<vtkGenericCell> cell, refCell;
+      int hits = 0;
+      for (int i = 0; i < 200; ++i)
+      {
+        // Segments from above the surface's box to below it, the plane's normal mostly along z.
+        const double p1[3] = { b[0] + u(g) * (b[1] - b[0]), b[2] + u(g) * (b[3] - b[2]), b[5] + 3 };
+        const double p2[3] = { b[0] + u(g) * (b[1] - b[0]), b[2] + u(g) * (b[3] - b[2]), b[4] - 3 };
+        double t, x[3], pc[3], rt, rx[3], rpc[3];
+        int sub, rsub;
+        vtkIdType id, rid;
+        const int hit = loc->IntersectWithLine(p1, p2, 0.0, t, x, pc, sub, id, cell);
+        const int refHit = ref->IntersectWithLine(p1, p2, 0.0, rt, rx, rpc, rsub, rid, refCell);
+        ASSERT_EQ(hit, refHit);
+        if (!hit)
+        {
+          continue;
+        }
+        ++hits;
+        // The cell's own location at (subId, pcoords) is the hit point.
+        double back[3], w[8];
+        cell->EvaluateLocation(sub, pc, back, w);
+        // (The engine traces in float and a quad's pcoords come by Newton steps: 1e-6 of a cell.)
+        EXPECT_LT(std::sqrt(vtkMath::Distance2BetweenPoints(back, x)), 1e-6) << "kind " << kind << " cell " << id;
+        if (id == rid)
+        {
+          EXPECT_NEAR(pc[0], rpc[0], 1e-6);
+          EXPECT_NEAR(pc[1], rpc[1], 1e-6);
+        }
+      }
+      EXPECT_GT(hits, 50);
+    }
+  }
+}
