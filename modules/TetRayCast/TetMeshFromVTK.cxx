@@ -1,0 +1,351 @@
+// TetMesh's builders from VTK data: full-resolution tets of an image (five per voxel cell) and
+// the tets of any vtkUnstructuredGrid (other cells tetrahedralised, cell data moved to points,
+// unused and duplicate points removed), with the checks that name the file.
+#include "TetMesh.h"
+#include "ArrayChoice.h"
+
+#include "Error.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCellDataToPointData.h>
+#include <vtkCellType.h>
+#include <vtkCellTypes.h>
+#include <vtkDataArray.h>
+#include <vtkDataSetTriangleFilter.h>
+#include <vtkGenericCell.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <tuple>
+
+#include <unistd.h>
+
+namespace art
+{
+void TetMesh::CheckFullResolutionFits(long long tets, double machineBytes, const std::string& file)
+{
+  if (tets >= (1LL << 29))
+  {
+    throw Error("volume too large for full-resolution tets (" + std::to_string(tets) +
+        " tets, at most 2^29); reduce it first (--tets N or --max-error E)",
+      file);
+  }
+  // About 160 bytes per tet with its share of the vertices (measured: 660 MB for the 4.3 M tets of
+  // the 128 x 128 x 54 CT). Past the machine's memory the build would be killed without a word.
+  const double need = 160.0 * tets;
+  if (machineBytes > 0 && need > 0.8 * machineBytes)
+  {
+    char msg[200];
+    std::snprintf(msg, sizeof msg,
+      "full-resolution tets of this volume (%lld) need about %.3g GB, more than this machine's %.3g GB allows; "
+      "reduce it first (--tets N or --max-error E)",
+      tets, need / 1e9, machineBytes / 1e9);
+    throw Error(msg, file);
+  }
+}
+
+TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
+{
+  vtkDataArray* s = image ? image->GetPointData()->GetScalars() : nullptr;
+  int d[3] = { 0, 0, 0 };
+  if (image)
+  {
+    image->GetDimensions(d);
+  }
+  if (!s)
+  {
+    throw Error("volume has no point scalars", file);
+  }
+  if (d[0] < 2 || d[1] < 2 || d[2] < 2)
+  {
+    throw Error("volume of " + std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " + std::to_string(d[2]) +
+        " voxels has no cells to tetrahedralise (at least 2 x 2 x 2 voxels are needed)",
+      file);
+  }
+  const long long np = static_cast<long long>(d[0]) * d[1] * d[2];
+  const long long nt = 5 * (d[0] - 1LL) * (d[1] - 1) * (d[2] - 1);
+  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
+  CheckFullResolutionFits(nt, pages > 0 && pageSize > 0 ? double(pages) * pageSize : 0.0, file);
+  std::vector<Vec3> pts(np);
+  std::vector<double> val(np);
+  const int* e = image->GetExtent(); // indices start at the extent's first corner
+  for (int k = 0, id = 0; k < d[2]; ++k)
+    for (int j = 0; j < d[1]; ++j)
+      for (int i = 0; i < d[0]; ++i, ++id)
+      {
+        double p[3];
+        image->TransformContinuousIndexToPhysicalPoint(e[0] + i, e[2] + j, e[4] + k, p); // origin, spacing, direction
+        pts[id] = Vec3(p);
+        val[id] = s->GetComponent(id, 0);
+      }
+  static const int five[5][4] = { { 0, 1, 2, 4 }, { 3, 1, 2, 7 }, { 5, 1, 4, 7 }, { 6, 2, 4, 7 }, { 1, 2, 4, 7 } };
+  std::vector<std::array<int, 4>> tets;
+  tets.reserve(5 * (d[0] - 1LL) * (d[1] - 1) * (d[2] - 1));
+  for (int k = 0; k + 1 < d[2]; ++k)
+    for (int j = 0; j + 1 < d[1]; ++j)
+      for (int i = 0; i + 1 < d[0]; ++i)
+      {
+        int c[8];
+        for (int b = 0; b < 8; ++b)
+        {
+          c[b] = ((k + ((b >> 2) & 1)) * d[1] + j + ((b >> 1) & 1)) * d[0] + i + (b & 1);
+        }
+        const int flip = (i + j + k) & 1; // mirror odd cells in x so shared face diagonals agree
+        for (const auto& t : five)
+        {
+          tets.push_back({ c[t[0] ^ flip], c[t[1] ^ flip], c[t[2] ^ flip], c[t[3] ^ flip] });
+        }
+      }
+  try
+  {
+    return TetMesh(std::move(pts), std::move(val), std::move(tets));
+  }
+  catch (const Error& e)
+  {
+    throw Error(e.problem(), file);
+  }
+}
+
+namespace
+{
+// Keeps the points with to[i] == i, in input order, and renumbers each tet's ids i through to[i]
+// (a kept point); ids out of range stay, for the constructor to name.
+void KeepPoints(std::vector<Vec3>& pts, std::vector<double>& val, std::vector<std::array<int, 4>>& tets,
+  const std::vector<int>& to)
+{
+  const std::size_t np = pts.size();
+  std::vector<int> index(np, -1);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < np; ++i)
+  {
+    if (to[i] == static_cast<int>(i))
+    {
+      index[i] = static_cast<int>(kept);
+      pts[kept] = pts[i], val[kept] = val[i];
+      ++kept;
+    }
+  }
+  pts.resize(kept), val.resize(kept);
+  for (auto& t : tets)
+  {
+    for (int& id : t)
+    {
+      id = id >= 0 && id < static_cast<int>(np) ? index[to[id]] : id;
+    }
+  }
+}
+
+// Points no tet uses (left over by a clip or threshold filter, or stray) are dropped, in order:
+// they would widen the bounds a camera frames, and a NaN among them would refuse the mesh.
+// Returns how many went; ids out of range are left for the constructor to name.
+std::size_t DropUnusedPoints(std::vector<Vec3>& pts, std::vector<double>& val, std::vector<std::array<int, 4>>& tets)
+{
+  const std::size_t np = pts.size();
+  std::vector<int> to(np, -1);
+  for (const auto& t : tets)
+  {
+    for (int v : t)
+    {
+      if (v < 0 || static_cast<std::size_t>(v) >= np)
+      {
+        return 0;
+      }
+      to[v] = v;
+    }
+  }
+  const std::size_t dropped = static_cast<std::size_t>(std::count(to.begin(), to.end(), -1));
+  if (dropped > 0)
+  {
+    KeepPoints(pts, val, tets, to);
+  }
+  return dropped;
+}
+
+// Points equal in position and scalar become one (exported meshes often give every cell its own
+// points). Without shared faces each tet would be a piece of its own, found through the boundary
+// grid at every step; points that differ in the scalar (a field discontinuous across a face) stay
+// apart. Returns how many points went.
+std::size_t MergeDuplicatePoints(std::vector<Vec3>& pts, std::vector<double>& val, std::vector<std::array<int, 4>>& tets)
+{
+  const std::size_t np = pts.size();
+  for (std::size_t i = 0; i < np; ++i)
+  {
+    if (!IsFinite(pts[i]) || !std::isfinite(val[i]))
+    {
+      return 0; // no order to sort by; the constructor names the point
+    }
+  }
+  std::vector<int> order(np);
+  std::iota(order.begin(), order.end(), 0);
+  auto key = [&](int i) { return std::make_tuple(pts[i].x, pts[i].y, pts[i].z, val[i]); };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) != key(b) ? key(a) < key(b) : a < b; });
+  std::vector<int> to(np);
+  std::size_t merged = 0;
+  for (std::size_t k = 0; k < np; ++k)
+  {
+    const bool same = k > 0 && key(order[k]) == key(order[k - 1]);
+    to[order[k]] = same ? to[order[k - 1]] : order[k];
+    merged += same ? 1 : 0;
+  }
+  if (merged == 0)
+  {
+    return 0;
+  }
+  KeepPoints(pts, val, tets, to); // the first of each group
+  return merged;
+}
+} // namespace
+
+TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, std::string* note, const std::string& file)
+{
+  if (!grid || grid->GetNumberOfCells() == 0)
+  {
+    throw Error("mesh has no cells", file);
+  }
+  // A surface or a line set saved as a grid has nothing to cast through: say what it holds.
+  // Cells of lower dimension beside 3-D ones are left out, with a note.
+  vtkIdType lower = 0;
+  {
+    vtkNew<vtkCellTypes> types;
+    grid->GetCellTypes(types);
+    bool anyLower = false;
+    bool low[256] = {};
+    vtkNew<vtkGenericCell> cell;
+    for (vtkIdType k = 0; k < types->GetNumberOfTypes(); ++k)
+    {
+      const unsigned char type = types->GetCellType(k);
+      cell->SetCellType(type);
+      low[type] = cell->GetCellDimension() < 3;
+      anyLower = anyLower || low[type];
+    }
+    for (vtkIdType c = 0; anyLower && c < grid->GetNumberOfCells(); ++c)
+    {
+      lower += low[grid->GetCellType(c)] ? 1 : 0;
+    }
+  }
+  if (lower == grid->GetNumberOfCells())
+  {
+    throw Error("holds no 3-D cells (its " + std::to_string(lower) +
+        " cells are surface, line or vertex cells): a tet mesh is needed; a surface renders from .vtp, .ply, .obj or .stl",
+      file);
+  }
+  // The scalars are chosen, and cell scalars averaged to the points, on the cells as given: after
+  // tetrahedralising, a cell's weight at a corner would depend on how many tets it became.
+  vtkSmartPointer<vtkUnstructuredGrid> ug = grid;
+  std::string notes = lower > 0 ? std::to_string(lower) + " cells that are not 3-D were left out" : "";
+  vtkDataArray* s = ChooseArray(ug->GetPointData(), array);
+  if (!s)
+  {
+    // Cell scalars (common in simulation output) are averaged to the points by VTK's
+    // vtkCellDataToPointData, since the walk interpolates linearly inside each tet.
+    vtkCellData* cd = ug->GetCellData();
+    vtkDataArray* cs = ChooseArray(cd, array);
+    if (!cs || !cs->GetName())
+    {
+      throw Error(array.empty() ? "mesh has no point or cell scalars"
+                                : "mesh has no point or cell array '" + array + "' (it has: " +
+            ArrayNames({ ug->GetPointData(), cd }) + ")",
+        file);
+    }
+    if (cs->GetNumberOfComponents() != 1)
+    {
+      throw Error("cell array '" + std::string(cs->GetName()) + "' has " + std::to_string(cs->GetNumberOfComponents()) +
+          " components; rendering needs one (pick another with --array)",
+        file);
+    }
+    vtkNew<vtkCellDataToPointData> toPoints;
+    toPoints->SetInputData(ug);
+    toPoints->ProcessAllArraysOff();
+    toPoints->AddCellDataArray(cs->GetName());
+    toPoints->Update();
+    const std::string name = cs->GetName();
+    ug = vtkUnstructuredGrid::SafeDownCast(toPoints->GetOutput());
+    s = ug->GetPointData()->GetArray(name.c_str());
+    notes += (notes.empty() ? "" : "; ") + ("cell scalars '" + name + "' were averaged to the points");
+  }
+  if (s->GetNumberOfComponents() != 1)
+  {
+    throw Error("point array '" + std::string(s->GetName() ? s->GetName() : "") + "' has " +
+        std::to_string(s->GetNumberOfComponents()) + " components; rendering needs one (pick another with --array)",
+      file);
+  }
+  bool allTets = true;
+  for (vtkIdType c = 0; c < ug->GetNumberOfCells() && allTets; ++c)
+  {
+    allTets = ug->GetCellType(c) == VTK_TETRA;
+  }
+  if (!allTets)
+  {
+    // The chosen array rides through as the active scalars.
+    auto withScalars = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    withScalars->ShallowCopy(ug);
+    withScalars->GetPointData()->SetScalars(s);
+    vtkNew<vtkDataSetTriangleFilter> tri;
+    tri->SetInputData(withScalars);
+    tri->TetrahedraOnlyOn();
+    tri->Update();
+    ug = tri->GetOutput();
+    notes = "non-tetrahedral cells were tetrahedralised (" + std::to_string(grid->GetNumberOfCells()) + " cells -> " +
+      std::to_string(ug->GetNumberOfCells()) + " tets)" + (notes.empty() ? "" : "; " + notes);
+    if (ug->GetNumberOfCells() == 0)
+    {
+      throw Error("mesh has no 3D cells to tetrahedralise", file);
+    }
+    s = ug->GetPointData()->GetScalars();
+  }
+  if (note)
+  {
+    *note += std::string(note->empty() || notes.empty() ? "" : "; ") + notes;
+  }
+  const vtkIdType np = ug->GetNumberOfPoints();
+  std::vector<Vec3> pts(np);
+  std::vector<double> val(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double p[3];
+    ug->GetPoint(i, p);
+    pts[i] = Vec3(p);
+    val[i] = s->GetComponent(i, 0);
+  }
+  std::vector<std::array<int, 4>> tets;
+  tets.reserve(ug->GetNumberOfCells());
+  vtkIdType n;
+  const vtkIdType* ids;
+  for (vtkIdType c = 0; c < ug->GetNumberOfCells(); ++c)
+  {
+    if (ug->GetCellType(c) != VTK_TETRA)
+    {
+      continue;
+    }
+    ug->GetCellPoints(c, n, ids);
+    tets.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]),
+      static_cast<int>(ids[3]) });
+  }
+  const std::size_t unused = DropUnusedPoints(pts, val, tets);
+  if (unused > 0 && note)
+  {
+    *note += std::string(note->empty() ? "" : "; ") + std::to_string(unused) + " points no tet uses were dropped";
+  }
+  const std::size_t merged = MergeDuplicatePoints(pts, val, tets);
+  if (merged > 0 && note)
+  {
+    *note += std::string(note->empty() ? "" : "; ") + std::to_string(merged) +
+      " duplicate points (same position and scalar) were merged, so their tets share faces";
+  }
+  try
+  {
+    return TetMesh(std::move(pts), std::move(val), std::move(tets));
+  }
+  catch (const Error& e)
+  {
+    throw Error(e.problem(), file);
+  }
+}
+} // namespace art
