@@ -3,7 +3,8 @@
 // vtkModifiedBSPTree and vtkOBBTree, on the same primary and shadow rays; plus the paper's
 // parameter tables (Dmitriev: R[thr,N] and O[thr,w]); and FindClosestPoint through
 // vtkTriangleGridLocator against vtkStaticCellLocator and vtkCellLocator on the same points, with
-// the distance error against brute force. Writes JSON, a markdown table and a chart.
+// the distance error against brute force (TriangleBenchClosestPoint.cxx; Embree's side in
+// TriangleBenchEmbree.cxx). Writes JSON, a markdown table and a chart.
 #ifdef ART_HAVE_TriangleGrid
 #include "Accelerator.h"
 #include "Bench.h"
@@ -14,6 +15,7 @@
 #include "Error.h"
 #include "Json.h"
 #include "ParallelTiles.h"
+#include "TriangleBench.h"
 
 #include "vtkTriangleGridLocator.h"
 
@@ -28,40 +30,19 @@
 #include <vtkPolyData.h>
 #include <vtkStaticCellLocator.h>
 
-#ifdef ART_HAVE_EMBREE
-#include <embree3/rtcore.h>
-#endif
-
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <random>
 #include <sstream>
 #include <thread>
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double Since(Clock::time_point t0)
-{
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-// Median of `runs` timings after one warm-up run.
-cli::BenchStats Time(int runs, const std::function<void()>& fn)
-{
-  return cli::TimeRuns(runs, [&] {
-    const auto t0 = Clock::now();
-    fn();
-    return Since(t0);
-  });
-}
+using namespace trianglebench;
 
 // Seconds -> Mrays/s (the median of rates is the rate of the median time; min-max swap).
 cli::BenchStats Rate(const cli::BenchStats& s, size_t rays)
@@ -69,15 +50,6 @@ cli::BenchStats Rate(const cli::BenchStats& s, size_t rays)
   const double r = double(rays) / 1e6;
   return { r / s.median, r / s.hi, r / s.lo };
 }
-
-struct Scene
-{
-  std::string name, path;
-  vtkSmartPointer<vtkPolyData> pd;
-  std::shared_ptr<art::TriangleStore> store;
-  std::vector<art::Ray> primary, shadow;
-  std::string view;
-};
 
 /// One engine's figures on one scene.
 struct Row
@@ -90,14 +62,6 @@ struct Row
   size_t rays = 0;     // primary rays timed
   std::string note;
   double agree = -1;   // % of primary rays with the same hit/miss and distance (1e-4) as Embree
-};
-
-/// A query engine over the scene's rays.
-struct Engine
-{
-  std::function<bool(const art::Ray&, double&)> closest;
-  std::function<bool(const art::Ray&)> any;
-  std::function<size_t(const art::Ray&)> all;
 };
 
 // Closest-hit distances of `rays` (rays[i] by index stride), on the current thread count.
@@ -363,136 +327,6 @@ void Work(const art::Accelerator& acc, const Scene& s, Row& row)
   row.trisPerRay = c.PerRay(c.trianglesTested);
 }
 
-#ifdef ART_HAVE_EMBREE
-std::atomic<long long> EmbreeBytes{ 0 };
-bool EmbreeMemory(void*, ssize_t bytes, bool)
-{
-  EmbreeBytes += bytes;
-  return true;
-}
-
-struct AllHitsContext
-{
-  RTCIntersectContext ctx;
-  size_t count;
-};
-
-// The intersection filter that turns rtcIntersect1 into an all-hits query: count, then reject.
-void AllHitsFilter(const RTCFilterFunctionNArguments* args)
-{
-  auto* c = reinterpret_cast<AllHitsContext*>(args->context);
-  if (c->count == size_t(-1))
-  {
-    return; // a plain closest-hit query
-  }
-  for (unsigned i = 0; i < args->N; ++i)
-  {
-    if (args->valid[i] == -1)
-    {
-      ++c->count;
-      args->valid[i] = 0;
-    }
-  }
-}
-
-struct EmbreeScene
-{
-  RTCDevice dev = nullptr;
-  RTCScene scene = nullptr;
-  long long bytes = 0;
-  explicit EmbreeScene(const art::TriangleStore& s)
-  {
-    dev = rtcNewDevice(nullptr);
-    rtcSetDeviceMemoryMonitorFunction(dev, EmbreeMemory, nullptr);
-    EmbreeBytes = 0;
-    scene = rtcNewScene(dev);
-    RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-    // The same float vertices our store traces, one vertex triple per triangle record.
-    const auto& pts = s.Points();
-    float* v = static_cast<float*>(
-      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), pts.size()));
-    for (size_t i = 0; i < pts.size(); ++i)
-    {
-      v[3 * i] = float(pts[i].x);
-      v[3 * i + 1] = float(pts[i].y);
-      v[3 * i + 2] = float(pts[i].z);
-    }
-    unsigned* idx = static_cast<unsigned*>(
-      rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), s.Size()));
-    for (size_t i = 0; i < s.Size(); ++i)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        idx[3 * i + k] = s.Record(i).v[k];
-      }
-    }
-    rtcSetGeometryIntersectFilterFunction(g, AllHitsFilter);
-    rtcCommitGeometry(g);
-    rtcAttachGeometry(scene, g);
-    rtcReleaseGeometry(g);
-    rtcCommitScene(scene);
-    bytes = EmbreeBytes.load();
-  }
-  ~EmbreeScene()
-  {
-    rtcReleaseScene(scene);
-    rtcReleaseDevice(dev);
-  }
-  static void Fill(const art::Ray& r, RTCRay& ray)
-  {
-    ray.org_x = float(r.org.x);
-    ray.org_y = float(r.org.y);
-    ray.org_z = float(r.org.z);
-    ray.dir_x = float(r.dir.x);
-    ray.dir_y = float(r.dir.y);
-    ray.dir_z = float(r.dir.z);
-    ray.tnear = float(r.tmin);
-    ray.tfar = std::isinf(r.tmax) ? std::numeric_limits<float>::infinity() : float(r.tmax);
-    ray.time = 0;
-    ray.mask = ~0u;
-    ray.id = 0;
-    ray.flags = 0;
-  }
-  Engine Queries() const
-  {
-    Engine e;
-    RTCScene sc = scene;
-    e.closest = [sc](const art::Ray& r, double& t) {
-      AllHitsContext c;
-      rtcInitIntersectContext(&c.ctx);
-      c.count = size_t(-1);
-      RTCRayHit rh;
-      Fill(r, rh.ray);
-      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(sc, &c.ctx, &rh);
-      t = rh.ray.tfar;
-      return rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-    };
-    e.any = [sc](const art::Ray& r) {
-      AllHitsContext c;
-      rtcInitIntersectContext(&c.ctx);
-      c.count = size_t(-1);
-      RTCRay ray;
-      Fill(r, ray);
-      rtcOccluded1(sc, &c.ctx, &ray);
-      return ray.tfar < 0;
-    };
-    e.all = [sc](const art::Ray& r) {
-      AllHitsContext c;
-      rtcInitIntersectContext(&c.ctx);
-      c.count = 0;
-      RTCRayHit rh;
-      Fill(r, rh.ray);
-      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(sc, &c.ctx, &rh);
-      return c.count;
-    };
-    return e;
-  }
-};
-#endif
 
 // A VTK cell locator's IntersectWithLine as a closest-hit query (and as the only any-hit it has).
 template <class Locator>
@@ -516,156 +350,6 @@ Engine VTKEngine(Locator* loc, double far)
     return e.closest(r, t);
   };
   return e;
-}
-
-// ---- Closest point: FindClosestPoint of every cell locator on the same query points ----
-
-/// One locator's closest-point figures on one scene.
-struct PointRow
-{
-  std::string scene, engine;
-  double buildMs = 0;
-  cli::BenchStats rate; // queries/s
-  size_t points = 0;    // points timed
-  double maxRelError = -1; // max |d - d_brute| / d_brute over the reference points
-  size_t sameCell = 0, refPoints = 0;
-  std::string note;
-};
-
-// Query points as the tests draw them: a third uniform in the (slightly grown) box, a third near the
-// surface (a random point of a random triangle moved up to 1% of the diagonal), a third 1-10
-// diagonals away.
-std::vector<art::Vec3> QueryPoints(const art::TriangleStore& st, size_t n)
-{
-  std::mt19937_64 g(17);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::normal_distribution<double> nd;
-  const art::Box3 b = st.Bounds();
-  const double diag = b.Diagonal();
-  std::vector<art::Vec3> xs(n);
-  for (size_t i = 0; i < n; ++i)
-  {
-    art::Vec3 d(nd(g), nd(g), nd(g));
-    d = d * (1.0 / (art::Length(d) + 1e-300));
-    if (i % 3 == 0)
-    {
-      const art::Vec3 pad = b.Size() * 0.05;
-      for (int a = 0; a < 3; ++a)
-      {
-        xs[i][a] = b.lo[a] - pad[a] + u(g) * (b.hi[a] - b.lo[a] + 2 * pad[a]);
-      }
-    }
-    else if (i % 3 == 1)
-    {
-      const size_t t = static_cast<size_t>(u(g) * double(st.Size())) % st.Size();
-      double w1 = u(g), w2 = u(g);
-      if (w1 + w2 > 1)
-      {
-        w1 = 1 - w1, w2 = 1 - w2;
-      }
-      const art::TriangleRecord& r = st.Record(t);
-      const auto& P = st.Points();
-      xs[i] = P[r.v[0]] + (P[r.v[1]] - P[r.v[0]]) * w1 + (P[r.v[2]] - P[r.v[0]]) * w2 + d * (0.01 * diag * u(g));
-    }
-    else
-    {
-      xs[i] = b.Center() + d * (diag * (1 + 9 * u(g)));
-    }
-  }
-  return xs;
-}
-
-struct PointAnswer
-{
-  double d2 = -1;
-  vtkIdType cell = -1;
-};
-
-// FindClosestPoint of `loc` on xs[0], xs[stride], ... (one thread: VTK's locators are timed that way).
-void RunPoints(vtkAbstractCellLocator* loc, const std::vector<art::Vec3>& xs, size_t stride, std::vector<PointAnswer>* out)
-{
-  vtkNew<vtkGenericCell> cell;
-  if (out)
-  {
-    out->clear();
-  }
-  for (size_t i = 0; i < xs.size(); i += stride)
-  {
-    const double x[3] = { xs[i].x, xs[i].y, xs[i].z };
-    double cp[3], d2;
-    vtkIdType id;
-    int sub;
-    loc->FindClosestPoint(x, cp, cell, id, sub, d2);
-    if (out)
-    {
-      out->push_back({ d2, id });
-    }
-  }
-}
-
-void BenchClosestPoint(const Scene& s, size_t nPoints, int runs, std::vector<PointRow>& rows)
-{
-  const std::vector<art::Vec3> xs = QueryPoints(*s.store, nPoints);
-  // The reference: our brute force (every triangle, exact in double) on a strided subset.
-  const size_t refStride = std::max<size_t>(1, xs.size() / std::max<size_t>(1, std::min<size_t>(xs.size(),
-                                                  s.store->Size() > 20000 ? 1000 : 5000)));
-  std::vector<PointAnswer> ref;
-  {
-    vtkNew<vtkTriangleGridLocator> brute;
-    brute->SetAcceleratorType(vtkTriangleGridLocator::BRUTE_FORCE);
-    brute->SetDataSet(s.pd);
-    brute->BuildLocator();
-    RunPoints(brute, xs, refStride, &ref);
-  }
-  const double diag = s.store->Bounds().Diagonal();
-  auto measure = [&](const std::string& name, vtkAbstractCellLocator* loc) {
-    PointRow r;
-    r.scene = s.name;
-    r.engine = name;
-    loc->SetDataSet(s.pd);
-    const cli::BenchStats b = Time(std::min(runs, 3), [&] { loc->FreeSearchStructure(); loc->Modified(); loc->BuildLocator(); });
-    r.buildMs = b.median * 1e3;
-    // As many points as fit in about half a second per run (VTK's locators are slow on far points).
-    const size_t probeStride = std::max<size_t>(1, xs.size() / 100);
-    const auto t0 = Clock::now();
-    RunPoints(loc, xs, probeStride, nullptr);
-    const double per = Since(t0) / double((xs.size() + probeStride - 1) / probeStride);
-    const size_t fit = static_cast<size_t>(0.5 / std::max(per, 1e-9));
-    const size_t stride = std::max<size_t>(1, xs.size() / std::max<size_t>(fit, 300));
-    r.points = (xs.size() + stride - 1) / stride;
-    const cli::BenchStats t = Time(runs, [&] { RunPoints(loc, xs, stride, nullptr); });
-    r.rate = { double(r.points) / t.median, double(r.points) / t.hi, double(r.points) / t.lo };
-    std::vector<PointAnswer> got;
-    RunPoints(loc, xs, refStride, &got);
-    r.maxRelError = 0;
-    r.refPoints = ref.size();
-    for (size_t i = 0; i < ref.size(); ++i)
-    {
-      const double d = std::sqrt(std::max(got[i].d2, 0.0)), dr = std::sqrt(ref[i].d2);
-      r.maxRelError = std::max(r.maxRelError, std::fabs(d - dr) / std::max(dr, 1e-9 * diag));
-      r.sameCell += got[i].cell == ref[i].cell;
-    }
-    char buf[128];
-    std::snprintf(buf, sizeof buf, "1 thread, %zu of %zu points", r.points, xs.size());
-    r.note = buf;
-    rows.push_back(r);
-    std::fprintf(stderr, "  closest point %-32s build %8.1f ms  %10.0f queries/s  max rel. error %.2g\n",
-      name.c_str(), r.buildMs, r.rate.median, r.maxRelError);
-  };
-  art::SetThreadCount(1);
-  for (int kind : { vtkTriangleGridLocator::UNIFORM_GRID, vtkTriangleGridLocator::RECURSIVE_GRID,
-         vtkTriangleGridLocator::OCTREE })
-  {
-    vtkNew<vtkTriangleGridLocator> loc;
-    loc->SetAcceleratorType(kind);
-    static const char* names[] = { "", "vtkTriangleGridLocator uniform grid", "vtkTriangleGridLocator R (default)",
-      "vtkTriangleGridLocator O" };
-    measure(names[kind], loc);
-  }
-  vtkNew<vtkStaticCellLocator> st;
-  measure("VTK vtkStaticCellLocator", st);
-  vtkNew<vtkCellLocator> cl;
-  measure("VTK vtkCellLocator", cl);
 }
 
 void Declare(cli::Options& o)
