@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <vector>
 
 namespace art
@@ -114,6 +115,45 @@ QualityReport MeasureQuality(const double* points, long long numPoints, const in
     }
   }
   std::sort(faces.begin(), faces.end());
+  // A face with one tet is on the boundary when every point lies on one side of its plane: the
+  // reducer's meshes fill a box turned and sheared by the volume's direction matrix, so its faces
+  // are those of a convex hull, not of the points' axis-aligned box (a rotated volume's outer
+  // faces all counted as cracks). The points' extent along each face normal is cached; a mesh
+  // has few normal directions on its outside.
+  std::map<std::array<long long, 3>, std::pair<double, double>> extent;
+  auto OnHull = [&](const std::array<int, 3>& f) {
+    const Vec3 a(points + 3 * static_cast<long long>(f[0]));
+    Vec3 n = Cross(Vec3(points + 3 * static_cast<long long>(f[1])) - a, Vec3(points + 3 * static_cast<long long>(f[2])) - a);
+    const double len = Length(n);
+    if (!(len > 0))
+    {
+      return false;
+    }
+    n = n * (1.0 / len);
+    // One sign per direction, so a box's opposite faces share their extent.
+    const int big = std::fabs(n.x) >= std::fabs(n.y) && std::fabs(n.x) >= std::fabs(n.z) ? 0
+      : std::fabs(n.y) >= std::fabs(n.z)                                               ? 1
+                                                                                         : 2;
+    if ((big == 0 ? n.x : big == 1 ? n.y : n.z) < 0)
+    {
+      n = n * -1.0;
+    }
+    const std::array<long long, 3> key = { std::llround(n.x * 1e9), std::llround(n.y * 1e9), std::llround(n.z * 1e9) };
+    auto it = extent.find(key);
+    if (it == extent.end())
+    {
+      double mn = std::numeric_limits<double>::infinity(), mx = -mn;
+      for (long long v = 0; v < numPoints; ++v)
+      {
+        const double d = Dot(n, Vec3(points + 3 * v));
+        mn = std::min(mn, d);
+        mx = std::max(mx, d);
+      }
+      it = extent.emplace(key, std::make_pair(mn, mx)).first;
+    }
+    const double d = Dot(n, a);
+    return std::fabs(d - it->second.first) <= eps || std::fabs(d - it->second.second) <= eps;
+  };
   for (size_t i = 0; i < faces.size();)
   {
     size_t j = i;
@@ -132,20 +172,7 @@ QualityReport MeasureQuality(const double* points, long long numPoints, const in
     }
     else
     {
-      bool onBox = false;
-      for (int d = 0; d < 3 && !onBox; ++d)
-      {
-        for (double plane : { lo[d], hi[d] })
-        {
-          bool all = true;
-          for (int v : faces[i])
-          {
-            all = all && std::fabs(points[3 * static_cast<long long>(v) + d] - plane) <= eps;
-          }
-          onBox = onBox || all;
-        }
-      }
-      ++(onBox ? q.BoundaryFaces : q.OpenFaces);
+      ++(OnHull(faces[i]) ? q.BoundaryFaces : q.OpenFaces);
     }
     i = j;
   }

@@ -14,9 +14,9 @@ struct QualityReport
 {
   long long Tets = 0;
   long long Inverted = 0;         ///< volume <= 0 (relative to the mesh size)
-  long long BoundaryFaces = 0;    ///< faces with one tet, lying on the bounding box
+  long long BoundaryFaces = 0;    ///< faces with one tet, lying on the convex hull
   long long InteriorFaces = 0;    ///< faces shared by exactly two tets
-  long long OpenFaces = 0;        ///< faces with one tet not on the bounding box (a crack)
+  long long OpenFaces = 0;        ///< faces with one tet not on the convex hull (a crack)
   long long OverSharedFaces = 0;  ///< faces held by three or more tets
   double MinDihedralDegrees = 0, MaxDihedralDegrees = 0;
   double MinRadiusRatio = 0, MeanRadiusRatio = 0;
@@ -26,8 +26,8 @@ struct QualityReport
   std::string Summary() const;
 };
 
-/// `points`: x y z per vertex; `tets`: 4 ids per tet. Boundary faces are those on the box of the
-/// points (the reducer's meshes fill a box).
+/// `points`: x y z per vertex; `tets`: 4 ids per tet. Boundary faces are those on the points'
+/// convex hull (the reducer's meshes fill a box, turned or sheared by the volume's direction).
 ADAPTIVERTREDUCTION_EXPORT QualityReport MeasureQuality(const double* points, long long numPoints,
   const int* tets, long long numTets);
 } // namespace art

@@ -332,3 +332,30 @@ TEST(TetReducer, BadInputIsAClearError)
   auto ok = art::VolumeFromImage(Field(d, s, o, [](double x, double, double) { return x; }));
   EXPECT_THROW(art::TetReducer(none).Run(ok), art::Error);
 }
+
+TEST(TetReducer, TurnedAndShearedVolumesPassTheConformityCheck)
+{
+  // An oblique MRI's direction matrix turns the mesh's box: its outer faces are the faces of the
+  // turned box, not of the points' axis-aligned box, and `reduce` called the mesh broken
+  // ("internal: ... failed its conformity check", 128 of 192 outer faces counted as cracks).
+  const int d[3] = { 12, 10, 9 };
+  const double s[3] = { 1.0, 1.2, 2.0 }, o[3] = { -30, 40, 7 };
+  const double c = std::cos(0.5), sn = std::sin(0.5);
+  const double turned[9] = { c, -sn, 0, sn * 0.6, c * 0.6, -0.8, sn * 0.8, c * 0.8, 0.6 };
+  const double sheared[9] = { 1, 0.5, 0, 0, 1, 0.25, 0, 0, 1 };
+  for (const double* m : { turned, sheared })
+  {
+    auto img = Field(d, s, o, [](double x, double y, double z) { return std::sin(0.3 * x) * y + z * z; });
+    img->SetDirectionMatrix(m);
+    art::ReducerOptions opt;
+    opt.TargetTets = 600;
+    const art::ReducedMesh mesh = art::TetReducer(opt).Run(art::VolumeFromImage(img)).back();
+    ExpectValid(mesh);
+    // A crack is still one: drop a tet and its four faces show as open.
+    art::ReducedMesh cracked = mesh;
+    cracked.Tets.erase(cracked.Tets.begin() + 4 * (mesh.NumberOfTets() / 2), cracked.Tets.begin() + 4 * (mesh.NumberOfTets() / 2 + 1));
+    const auto q = art::MeasureQuality(cracked.Points.data(), cracked.NumberOfVertices(), cracked.Tets.data(), cracked.NumberOfTets());
+    EXPECT_GT(q.OpenFaces, 0) << q.Summary();
+    EXPECT_FALSE(q.Valid());
+  }
+}
