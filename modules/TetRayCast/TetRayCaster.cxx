@@ -263,6 +263,7 @@ struct TetRayCaster::Impl
       finder = std::make_unique<const EntryFinder>(rc.M, cam);
     }
     const bool parallel = cam.IsParallel();
+    const auto& clip = rc.S.clipPlanes;
     const int eyeTet = !parallel && rc.M.Bounds().Contains(cam.Position()) ? rc.M.Locate(cam.Position()) : -1;
     std::atomic<std::uint64_t> nudges{ 0 };
     std::unique_ptr<const ProjectedView> view;
@@ -320,6 +321,18 @@ struct TetRayCaster::Impl
               rc.M.Bounds().Clip(line, l0, l1);
               from = r.tmin;
               r.tmin = std::min(l0, r.tmin) - 1e-6 * (l1 - l0); // the box's faces a margin inside
+            }
+            if (!clip.empty())
+            {
+              // The walk still starts at the mesh's surface; nothing before the planes' interval
+              // is integrated, and the ray ends where the interval does.
+              double c0 = r.tmin, c1 = r.tmax;
+              if (!ClipToPlanes(clip, r, c0, c1))
+              {
+                continue;
+              }
+              from = std::max(from, c0);
+              r.tmax = c1;
             }
             const TetWalker w(rc.M, r);
             std::optional<ProjectedWalker> pw;
@@ -481,13 +494,48 @@ RenderStats TetRayCaster::Render(const Camera& cam, Image& img, Progress* progre
   return Impl::RenderWith(*this, ExactIntegrator(S.tf), cam, img, progress, ends);
 }
 
-RayResult TetRayCaster::Cast(const Ray& r) const
+bool ClipToPlanes(const std::vector<std::array<double, 4>>& planes, const Ray& r, double& t0, double& t1)
+{
+  for (const auto& q : planes)
+  {
+    // a.(o + t d) + d0 >= 0  <=>  t * (a.d) >= -(a.o + d0)
+    const double num = q[0] * r.org.x + q[1] * r.org.y + q[2] * r.org.z + q[3];
+    const double den = q[0] * r.dir.x + q[1] * r.dir.y + q[2] * r.dir.z;
+    if (den > 0)
+    {
+      t0 = std::max(t0, -num / den);
+    }
+    else if (den < 0)
+    {
+      t1 = std::min(t1, -num / den);
+    }
+    else if (num < 0)
+    {
+      return false; // parallel to the plane, on its clipped side
+    }
+  }
+  return t0 < t1;
+}
+
+RayResult TetRayCaster::Cast(const Ray& ray) const
 {
   RayResult res;
   double t0, t1;
-  if (!r.IsValid() || !M.Bounds().Clip(r, t0, t1))
+  if (!ray.IsValid() || !M.Bounds().Clip(ray, t0, t1))
   {
     return res;
+  }
+  Ray r = ray;
+  double from = -std::numeric_limits<double>::infinity();
+  if (!S.clipPlanes.empty())
+  {
+    double c0 = r.tmin, c1 = r.tmax;
+    if (!ClipToPlanes(S.clipPlanes, r, c0, c1))
+    {
+      return res;
+    }
+    from = c0;
+    r.tmax = c1;
   }
   const EntryFinder finder(M);
   const TetWalker w(M, r);
@@ -499,11 +547,11 @@ RayResult TetRayCaster::Cast(const Ray& r) const
   const int start = M.Bounds().Contains(r.At(r.tmin)) ? M.Locate(r.At(r.tmin)) : -1;
   if (S.rule == RenderSettings::Rule::Trapezoid)
   {
-    Impl::Trace(*this, TrapezoidRule(S.tf), w, w, r, start, entries, res, c, nudges);
+    Impl::Trace(*this, TrapezoidRule(S.tf), w, w, r, start, entries, res, c, nudges, false, from);
   }
   else
   {
-    Impl::Trace(*this, ExactIntegrator(S.tf), w, w, r, start, entries, res, c, nudges);
+    Impl::Trace(*this, ExactIntegrator(S.tf), w, w, r, start, entries, res, c, nudges, false, from);
   }
   return res;
 }

@@ -61,7 +61,17 @@ struct RenderSettings
   /// its boundary faces (screen buckets, every entry) and leave it where it ends. The image is
   /// the same up to round-off: the skipped tets add nothing.
   bool skipEmpty = true;
+  /// Clipping planes (a, b, c, d) in the mesh's coordinates: only where a x + b y + c z + d >= 0
+  /// is drawn (the side the normal points to, as VTK's mappers keep). Each ray's interval is cut,
+  /// so moving a plane costs nothing; the image is that of the mesh cut by the planes (the field
+  /// is linear in each tet), but the clipped-away tets in front are still walked.
+  std::vector<std::array<double, 4>> clipPlanes;
 };
+
+/// Cuts [t0, t1] of ray r to where every plane (a, b, c, d) has a x + b y + c z + d >= 0.
+/// Returns false when nothing is left.
+ADAPTIVERTTETRAYCAST_EXPORT bool ClipToPlanes(
+  const std::vector<std::array<double, 4>>& planes, const Ray& r, double& t0, double& t1);
 
 struct RayResult
 {

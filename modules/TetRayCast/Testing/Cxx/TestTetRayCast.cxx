@@ -51,7 +51,7 @@ namespace
 // Every pixel against the closed-form integral of the linear field through the box (from the
 // ray's origin when that lies inside); returns the number of pixels whose ray meets the box.
 int ExpectClosedForm(const TetMesh& m, const Image& img, const Camera& cam, double lo, double hi,
-  const std::vector<double>* ends = nullptr)
+  const std::vector<double>* ends = nullptr, const std::vector<std::array<double, 4>>& planes = {})
 {
   const double tau = -std::log(0.7) / 0.5;
   int inside = 0;
@@ -61,7 +61,19 @@ int ExpectClosedForm(const TetMesh& m, const Image& img, const Camera& cam, doub
       Ray r = cam.Generate(x, y);
       r.tmax = ends ? (*ends)[y * img.Width() + x] : r.tmax;
       double t0, t1, C[3] = { 0, 0, 0 }, a = 0;
-      if (m.Bounds().Clip(r, t0, t1) && t1 > t0)
+      bool in = m.Bounds().Clip(r, t0, t1);
+      for (const auto& q : planes) // the half-space a x + b y + c z + d >= 0 on the ray
+      {
+        const double at0 = q[0] * r.At(t0).x + q[1] * r.At(t0).y + q[2] * r.At(t0).z + q[3];
+        const double at1 = q[0] * r.At(t1).x + q[1] * r.At(t1).y + q[2] * r.At(t1).z + q[3];
+        if (at0 < 0 && at1 < 0)
+          in = false;
+        else if (at0 < 0)
+          t0 += (t1 - t0) * at0 / (at0 - at1);
+        else if (at1 < 0)
+          t1 -= (t1 - t0) * at1 / (at1 - at0);
+      }
+      if (in && t1 > t0)
       {
         ++inside;
         const double L = (t1 - t0) * Length(r.dir), s0 = Linear(r.At(t0)), s1 = Linear(r.At(t1));
@@ -176,6 +188,48 @@ TEST(TetRayCast, CameraInsideTheMesh)
     rc.Render(cam, img);
     EXPECT_EQ(ExpectClosedForm(m, img, cam, lo, hi), 40 * 32) << "parallel " << parallel;
   }
+}
+
+TEST(TetRayCast, ClippingPlanesCutEachRay)
+{
+  // Two oblique planes leave a wedge of the box: each pixel against the closed form over the
+  // wedge, from outside (perspective) and from inside (parallel, origins in the clipped part).
+  const TetMesh m = LinearBox();
+  RenderSettings s = LinearSettings();
+  s.clipPlanes = { { 1, 0.5, -0.3, -0.41 }, { -0.2, 1, 0.6, -0.35 } };
+  const TetRayCaster rc(m, s);
+  Image img;
+  const Camera outside = ViewOf(m.Bounds(), 48, 40, 30, 20);
+  rc.Render(outside, img);
+  const int kept = ExpectClosedForm(m, img, outside, LinearLo, LinearHi, nullptr, s.clipPlanes);
+  EXPECT_GT(kept, 200);
+  int box = 0;
+  for (int y = 0; y < 40; ++y)
+    for (int x = 0; x < 48; ++x)
+    {
+      double t0, t1;
+      box += m.Bounds().Clip(outside.Generate(x, y), t0, t1) ? 1 : 0;
+    }
+  EXPECT_LT(kept, box - 200) << "the planes cut rays off";
+  vtkNew<vtkCamera> vc;
+  vc->SetPosition(0.37, 0.41, 0.53);
+  vc->SetFocalPoint(0.9, 0.8, 0.7);
+  vc->SetViewUp(0, 0, 1);
+  vc->SetParallelProjection(true);
+  vc->SetParallelScale(0.3);
+  const Camera inside = Camera::FromVTK(vc, 40, 32);
+  rc.Render(inside, img);
+  EXPECT_GT(ExpectClosedForm(m, img, inside, LinearLo, LinearHi, nullptr, s.clipPlanes), 200);
+  // One ray by Cast, and everything clipped away.
+  Ray r;
+  r.org = { -1, 0.5, 0.5 };
+  r.dir = { 1, 0, 0 };
+  s.clipPlanes = { { 1, 0, 0, -0.6 } };
+  EXPECT_NEAR(TetRayCaster(m, s).Cast(r).rgba[3], 1 - std::pow(0.7, 0.4 / 0.5), 1e-12);
+  s.clipPlanes = { { 1, 0, 0, -2 } };
+  TetRayCaster(m, s).Render(outside, img);
+  for (float v : img.Pixels())
+    ASSERT_EQ(v, 0.0f);
 }
 
 TEST(TetRayCast, TwoTetrahedralisationsGiveTheSameImage)
