@@ -6,15 +6,12 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetAttributes.h>
-#include <vtkDataSetTriangleFilter.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPlane.h>
 #include <vtkPlaneCollection.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
-#include <vtkTableBasedClipDataSet.h>
-#include <vtkTetra.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
@@ -183,64 +180,6 @@ std::vector<std::array<double, 4>> PlanesInData(vtkPlaneCollection* planes, vtkM
     double t[3] = { toWorld->GetElement(0, 3), toWorld->GetElement(1, 3), toWorld->GetElement(2, 3) };
     q[3] = n[0] * (t[0] - o[0]) + n[1] * (t[1] - o[1]) + n[2] * (t[2] - o[2]);
     out.push_back(q);
-  }
-  return out;
-}
-
-// grid cut by each plane in turn (exact for the linear field inside each tet).
-vtkSmartPointer<vtkUnstructuredGrid> Clipped(vtkUnstructuredGrid* grid, const std::vector<std::array<double, 4>>& planes)
-{
-  vtkSmartPointer<vtkUnstructuredGrid> g = grid;
-  for (const auto& q : planes)
-  {
-    const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-    if (!(len > 0))
-    {
-      continue;
-    }
-    vtkNew<vtkPlane> plane;
-    plane->SetNormal(q[0] / len, q[1] / len, q[2] / len);
-    plane->SetOrigin(-q[3] * q[0] / (len * len), -q[3] * q[1] / (len * len), -q[3] * q[2] / (len * len));
-    vtkNew<vtkTableBasedClipDataSet> clip;
-    clip->SetInputData(g);
-    clip->SetClipFunction(plane);
-    clip->Update();
-    g = clip->GetOutput();
-    if (g->GetNumberOfCells() == 0)
-    {
-      return g;
-    }
-  }
-  // A plane through vertices leaves cells of no volume (wedges collapsed onto it), which the walk
-  // cannot link: the pieces are cut into tets and the flat ones left out.
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputData(g);
-  tets->Update();
-  vtkUnstructuredGrid* t = tets->GetOutput();
-  const double d = t->GetLength(), flat = 1e-12 * d * d * d;
-  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  out->SetPoints(t->GetPoints());
-  out->GetPointData()->ShallowCopy(t->GetPointData());
-  out->GetCellData()->CopyAllocate(t->GetCellData(), t->GetNumberOfCells());
-  out->Allocate(t->GetNumberOfCells());
-  for (vtkIdType c = 0; c < t->GetNumberOfCells(); ++c)
-  {
-    double p[4][3];
-    vtkIdType n;
-    const vtkIdType* ids;
-    t->GetCellPoints(c, n, ids);
-    if (t->GetCellType(c) != VTK_TETRA || n != 4)
-    {
-      continue;
-    }
-    for (int k = 0; k < 4; ++k)
-    {
-      t->GetPoint(ids[k], p[k]);
-    }
-    if (std::fabs(vtkTetra::ComputeVolume(p[0], p[1], p[2], p[3])) > flat)
-    {
-      out->GetCellData()->CopyData(t->GetCellData(), c, out->InsertNextCell(VTK_TETRA, 4, ids));
-    }
   }
   return out;
 }

@@ -1,6 +1,6 @@
 // MapperGrid: the input grid as vtkTetRayCastMapper hands it to the engine: the array its
-// ScalarMode selects, without ghost cells, moved by a volume matrix the camera cannot absorb, and
-// cut by the mapper's clipping planes (VTK's volume-mapper conventions, each kept as VTK's own).
+// ScalarMode selects, without ghost cells, moved by a volume matrix the camera cannot absorb; and
+// the mapper's clipping planes in the engine's coordinates (VTK's volume-mapper conventions).
 #ifndef art_MapperGrid_h
 #define art_MapperGrid_h
 
@@ -31,8 +31,6 @@ vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(
 vtkSmartPointer<vtkUnstructuredGrid> WithoutGhosts(vtkUnstructuredGrid* engineGrid, vtkUnstructuredGrid* grid);
 /// The clipping planes (world coordinates) in the engine's: (a, b, c, d), a x + b y + c z + d >= 0 kept.
 std::vector<std::array<double, 4>> PlanesInData(vtkPlaneCollection* planes, vtkMatrix4x4* toWorld);
-/// grid cut by each plane in turn (exact for the linear field inside each tet), in tets.
-vtkSmartPointer<vtkUnstructuredGrid> Clipped(vtkUnstructuredGrid* grid, const std::vector<std::array<double, 4>>& planes);
 } // namespace mapper
 } // namespace art
 

@@ -259,12 +259,8 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   vtkNew<vtkMatrix4x4> toData;
   vtkMatrix4x4::Invert(engineToWorld, toData);
-  const std::vector<std::array<double, 4>> planes = art::mapper::PlanesInData(this->ClippingPlanes, engineToWorld);
-  for (const auto& pl : planes)
-  {
-    key += " clip" + exact(pl[0]) + exact(pl[1]) + exact(pl[2]) + exact(pl[3]);
-  }
-  // (Re)build the engine's arrays only when the data, the array or the clipping planes changed.
+  // (Re)build the engine's arrays only when the data, the array or the matrix's linear part
+  // changed; clipping planes cut the rays, not the mesh.
   if (!this->Impl->Mesh || this->Impl->MeshInput != input || this->Impl->MeshTime < input->GetMTime() ||
     this->Impl->MeshArray != key)
   {
@@ -282,17 +278,9 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       {
         engineGrid = art::mapper::Transformed(engineGrid, meshToEngine);
       }
-      if (!planes.empty())
-      {
-        engineGrid = art::mapper::Clipped(engineGrid, planes);
-        if (engineGrid->GetNumberOfCells() == 0)
-        {
-          return; // everything is clipped away: nothing to draw
-        }
-      }
       this->Impl->Mesh = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(engineGrid, {}, &note));
       this->Impl->Caster = std::make_unique<art::TetRayCaster>(*this->Impl->Mesh, art::RenderSettings{});
-      if (!note.empty() && planes.empty()) // a clip's own leftovers (unused points) are no news
+      if (!note.empty())
       {
         vtkWarningMacro(<< note);
       }
@@ -326,6 +314,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   s.mode = this->BlendMode == MAXIMUM_INTENSITY_BLEND ? art::RenderSettings::Mode::MaxIntensity
                                                       : art::RenderSettings::Mode::Composite;
   s.isos = this->Impl->Isos;
+  s.clipPlanes = art::mapper::PlanesInData(this->ClippingPlanes, engineToWorld);
 
   const double allocated = vol->GetAllocatedRenderTime();
   if (this->AutoAdjustSampleDistances && this->LastFrameSeconds > 0 && allocated > 0)
