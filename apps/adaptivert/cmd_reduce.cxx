@@ -44,7 +44,7 @@ std::string Grouped(long long n)
 
 void Declare(cli::Options& o)
 {
-  o.Add("array", 0, "NAME", "point array to reduce (default: the active scalars)");
+  o.Add("array", 0, "NAME", "point array to reduce (default: the active scalars); NAME:magnitude or NAME:N for a vector's magnitude or component N");
   o.Add("tets", 't', "N", "stop at N tetrahedra (or N% of the voxel count)");
   o.Add("max-error", 'e', "E",
     "stop when the error (opacity-weighted with --tf) is at most E data units (E% of the scalar range)");
@@ -98,6 +98,7 @@ int Run(const cli::Options& o)
   }
 
   auto image = art::LoadVolume(in, o.Get("array"));
+  art::RequireOneComponent(image, in);
   const art::VoxelVolume volume = art::VolumeFromImage(image, in);
   const long long voxels = volume.NumberOfVoxels();
   if (o.Has("tf"))

@@ -9,6 +9,8 @@
 #include <initializer_list>
 #include <string>
 
+#include <vtkSmartPointer.h>
+
 class vtkDataArray;
 class vtkDataSetAttributes;
 class vtkFieldData;
@@ -20,6 +22,23 @@ namespace art
 ADAPTIVERTCORE_EXPORT vtkDataArray* ChooseArray(vtkDataSetAttributes* d, const std::string& name, bool named = false);
 /// "a, b, c" over the arrays of every field given ("(unnamed)" for one without a name), or "none".
 ADAPTIVERTCORE_EXPORT std::string ArrayNames(std::initializer_list<vtkFieldData*> fields);
+
+/// What to take from a vector (velocity, RGB) array, as VTK's volume mappers do (VectorMode).
+enum : int
+{
+  WholeArray = -2, ///< the array as it is (one component needed)
+  Magnitude = -1   ///< the Euclidean norm of each tuple
+};
+/// Splits a ParaView-style "NAME:magnitude", "NAME:N" (0-based) or "NAME:X|Y|Z" into the name
+/// and Magnitude or N; any other text is a name, read whole (WholeArray). Case is ignored in the
+/// suffix; an empty name means the active scalars.
+ADAPTIVERTCORE_EXPORT std::string SplitComponent(const std::string& spec, int* component);
+/// One component of `a` (0-based) or its magnitude, as a double array named "NAME:magnitude" or
+/// "NAME:N"; `a` itself for WholeArray. A component past the last throws art::Error naming how
+/// many there are.
+ADAPTIVERTCORE_EXPORT vtkSmartPointer<vtkDataArray> TakeComponent(vtkDataArray* a, int component);
+/// "NAME:magnitude or NAME:0 .. NAME:n-1", for errors about an array of n components.
+ADAPTIVERTCORE_EXPORT std::string ComponentHint(vtkDataArray* a);
 } // namespace art
 
 #endif

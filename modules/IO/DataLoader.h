@@ -31,6 +31,8 @@ ADAPTIVERTIO_EXPORT const char* KindName(DataKind k);
 
 /// The volume's point array `array` becomes its scalars (default: the active scalars, else the
 /// first one-component array); a missing array is an art::Error that lists the ones there are.
+/// "NAME:magnitude" or "NAME:N" (also X, Y, Z; ":magnitude" alone for the active scalars) takes
+/// a vector's magnitude or component N as one-component double scalars (art::SplitComponent).
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::string& array = {});
 /// For renderers: an art::Error naming `path` unless the volume's scalars have one component.
 ADAPTIVERTIO_EXPORT void RequireOneComponent(vtkImageData* volume, const std::string& path);

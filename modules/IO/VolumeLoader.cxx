@@ -238,7 +238,35 @@ void MakeSpacingPositive(vtkImageData* img, const std::string& path)
 }
 } // namespace
 
+namespace
+{
+vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const std::string& array);
+}
+
 vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::string& array)
+{
+  // "velocity:magnitude", "velocity:0": a vector's magnitude or one component becomes the scalars
+  // (what VTK's volume mappers draw of a vector with VectorMode), after any rescale of the file.
+  int component;
+  const std::string name = SplitComponent(array, &component);
+  auto img = LoadWholeVolume(path, name);
+  if (component != WholeArray)
+  {
+    try
+    {
+      img->GetPointData()->SetScalars(TakeComponent(img->GetPointData()->GetScalars(), component));
+    }
+    catch (const Error& e)
+    {
+      throw Error(e.problem(), path);
+    }
+  }
+  return img;
+}
+
+namespace
+{
+vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const std::string& array)
 {
   if (KindOf(path) != DataKind::Volume)
   {
@@ -336,8 +364,15 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
     // Voxels without values said "holds no voxels (empty or unreadable volume)" too.
     if (img->GetNumberOfPoints() > 0 && img->GetPointData()->GetNumberOfArrays() > 0)
     {
+      vtkDataArray* vector = nullptr;
+      for (int i = 0; i < img->GetPointData()->GetNumberOfArrays() && !vector; ++i)
+      {
+        vtkDataArray* a = img->GetPointData()->GetArray(i);
+        vector = a && a->GetName() && a->GetNumberOfComponents() > 1 ? a : nullptr;
+      }
       throw Error("has no one-component point array to take as the voxels (point arrays: " +
-          ArrayNames({ img->GetPointData() }) + "; extract a component first)",
+          ArrayNames({ img->GetPointData() }) +
+          (vector ? "; choose a vector's magnitude or component with --array " + ComponentHint(vector) : "") + ")",
         path);
     }
     if (img->GetNumberOfPoints() > 0)
@@ -351,14 +386,16 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
   }
   return img;
 }
+} // namespace
 
 void RequireOneComponent(vtkImageData* volume, const std::string& path)
 {
   vtkDataArray* s = volume->GetPointData()->GetScalars();
   if (const int nc = s ? s->GetNumberOfComponents() : 0; nc != 1)
   {
-    throw Error("the scalars have " + std::to_string(nc) +
-        " components; rendering needs one (pick a one-component array with --array, or extract a component)",
+    throw Error("the scalars" + (s && s->GetName() ? " '" + std::string(s->GetName()) + "'" : std::string()) +
+        " have " + std::to_string(nc) + " components; one is needed (choose with --array " + ComponentHint(s) +
+        ", or another array)",
       path);
   }
 }

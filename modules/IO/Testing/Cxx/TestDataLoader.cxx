@@ -485,7 +485,58 @@ TEST(DataLoader, VoxelsWithoutValues)
   std::ofstream(dir + "field-only.vtk") << head << "FIELD FieldData 1\ntime 1 1 float\n1.5\n";
   ExpectError(dir + "field-only.vtk", "has 8 voxels but no values on them (only field data: time)");
   std::ofstream(dir + "vectors-only.vtk") << head << "POINT_DATA 8\nVECTORS grad float\n" << "1 0 0 1 0 0 1 0 0 1 0 0 1 0 0 1 0 0 1 0 0 1 0 0\n";
-  ExpectError(dir + "vectors-only.vtk", "has no one-component point array to take as the voxels (point arrays: grad; extract a component first)");
+  ExpectError(dir + "vectors-only.vtk", "has no one-component point array to take as the voxels (point arrays: grad; "
+                                        "choose a vector's magnitude or component with --array grad:magnitude or grad:0 .. grad:2)");
+}
+
+// A vector array (a simulation's velocity, an RGB volume) was refused everywhere: "NAME:magnitude"
+// and "NAME:N" (or X, Y, Z) take what VTK's volume mappers draw of it (VectorMode), as one-component
+// scalars.
+TEST(DataLoader, VectorMagnitudeOrComponent)
+{
+  const std::string path = std::string(ART_TEST_OUTPUT) + "/velocity.vtk";
+  std::ofstream(path) << "# vtk DataFile Version 3.0\nt\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2 2 2\n"
+                         "ORIGIN 0 0 0\nSPACING 1 1 1\nPOINT_DATA 8\nSCALARS density float 1\nLOOKUP_TABLE default\n"
+                         "0 1 2 3 4 5 6 7\nVECTORS velocity float\n"
+                         "3 4 0  0 0 2  1 2 2  -6 8 0  0 0 0  1 0 0  0 -5 12  2 3 6\n";
+  const double magnitude[8] = { 5, 2, 3, 10, 0, 1, 13, 7 };
+  for (const char* spec : { "velocity:magnitude", "velocity:Magnitude", "velocity:mag" })
+  {
+    auto v = art::LoadVolume(path, spec);
+    vtkDataArray* s = v->GetPointData()->GetScalars();
+    ASSERT_EQ(s->GetNumberOfComponents(), 1);
+    EXPECT_STREQ(s->GetName(), "velocity:magnitude");
+    for (int i = 0; i < 8; ++i)
+    {
+      EXPECT_DOUBLE_EQ(s->GetTuple1(i), magnitude[i]) << spec << " voxel " << i;
+    }
+  }
+  auto y = art::LoadVolume(path, "velocity:1"), Y = art::LoadVolume(path, "velocity:Y");
+  const double ys[8] = { 4, 0, 2, 8, 0, 0, -5, 3 };
+  for (int i = 0; i < 8; ++i)
+  {
+    EXPECT_EQ(y->GetPointData()->GetScalars()->GetTuple1(i), ys[i]);
+    EXPECT_EQ(Y->GetPointData()->GetScalars()->GetTuple1(i), ys[i]);
+  }
+  // The plain array is still read as it is; a one-component array's component 0 is itself.
+  auto d = art::LoadVolume(path, "density"), d0 = art::LoadVolume(path, "density:0");
+  EXPECT_EQ(d->GetPointData()->GetScalars()->GetTuple1(7), 7);
+  EXPECT_EQ(d0->GetPointData()->GetScalars()->GetTuple1(7), 7);
+  auto expectError = [&](const std::string& array, const std::string& what) {
+    try
+    {
+      art::RequireOneComponent(art::LoadVolume(path, array), path);
+      ADD_FAILURE() << array << ": no error";
+    }
+    catch (const art::Error& e)
+    {
+      EXPECT_NE(std::string(e.what()).find(path + ": " + what), std::string::npos) << e.what();
+    }
+  };
+  expectError("velocity:3", "array 'velocity' has 3 components (0 .. 2), not a component 3");
+  expectError("speed:magnitude", "has no point array 'speed'");
+  expectError("velocity", "the scalars 'velocity' have 3 components; one is needed (choose with --array "
+                          "velocity:magnitude or velocity:0 .. velocity:2, or another array)");
 }
 
 // Compressed MetaImage data that does not fit its header was read silently wrong by
