@@ -1,6 +1,7 @@
 #include "MapperGrid.h"
 
 #include "ArrayChoice.h"
+#include "Error.h"
 
 #include <vtkAbstractMapper.h> // VTK_SCALAR_MODE_*
 #include <vtkCellData.h>
@@ -77,8 +78,8 @@ vtkSmartPointer<vtkUnstructuredGrid> Transformed(vtkUnstructuredGrid* grid, vtkM
 // cells, with only the array the mode selects (TetMesh::FromVTK takes the point scalars, else
 // averages the cell scalars to the points). VTK_SCALAR_MODE_DEFAULT passes grid as it is. `key`
 // names the choice (a change rebuilds the mesh); nullptr, with `error` set, when there is none.
-vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(
-  vtkUnstructuredGrid* grid, int mode, const char* name, int id, std::string& key, std::string& error)
+vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(vtkUnstructuredGrid* grid, int mode, const char* name, int id,
+  int component, std::string& key, std::string& error)
 {
   vtkDataArray* a = nullptr;
   bool onCells = false;
@@ -109,21 +110,43 @@ vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(
       break;
     }
     default:
-      key = "default";
-      return grid;
+      // The engine takes the point scalars, else the cell scalars: as they are unless a vector.
+      a = grid->GetPointData()->GetScalars();
+      onCells = !a;
+      a = a ? a : grid->GetCellData()->GetScalars();
+      if (!a || a->GetNumberOfComponents() == 1)
+      {
+        key = "default";
+        return grid;
+      }
+      break;
   }
   if (!a)
   {
     return nullptr;
   }
-  if (a->GetNumberOfComponents() != 1)
+  if (a->GetNumberOfComponents() != 1 && component == WholeArray)
   {
     error = std::string(onCells ? "cell" : "point") + " array '" + (a->GetName() ? a->GetName() : "") + "' has " +
       std::to_string(a->GetNumberOfComponents()) +
-      " components; the mapper renders one (select another with SelectScalarArray, or extract a component)";
+      " components; the mapper renders one (SetVectorMode(vtkTetRayCastMapper::MAGNITUDE), or COMPONENT with "
+      "SetVectorComponent; or select another array with SelectScalarArray)";
     return nullptr;
   }
   vtkSmartPointer<vtkDataArray> named = a;
+  if (component != WholeArray)
+  {
+    try
+    {
+      // A one-component array's component 0 is itself (VTK's mappers ignore VectorMode there).
+      named = a->GetNumberOfComponents() == 1 ? vtkSmartPointer<vtkDataArray>(a) : TakeComponent(a, component);
+    }
+    catch (const Error& e)
+    {
+      error = e.problem() + " (SetVectorComponent)";
+      return nullptr;
+    }
+  }
   if (!a->GetName() || !*a->GetName())
   {
     // FromVTK averages cell arrays to the points by name.
@@ -134,7 +157,8 @@ vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(
   auto view = vtkSmartPointer<vtkUnstructuredGrid>::New();
   view->CopyStructure(grid);
   (onCells ? static_cast<vtkDataSetAttributes*>(view->GetCellData()) : view->GetPointData())->SetScalars(named);
-  key = std::to_string(mode) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(a));
+  key = std::to_string(mode) + ":" + std::to_string(reinterpret_cast<std::uintptr_t>(a)) + ":" +
+    std::to_string(a->GetNumberOfComponents() == 1 ? WholeArray : component);
   return view;
 }
 

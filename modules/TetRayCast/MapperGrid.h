@@ -23,10 +23,11 @@ namespace mapper
 double SimilarityScale(vtkMatrix4x4* m);
 /// grid with its points taken through `m`, into the coordinates the engine casts in.
 vtkSmartPointer<vtkUnstructuredGrid> Transformed(vtkUnstructuredGrid* grid, vtkMatrix4x4* m);
-/// The grid as the engine should see it under ScalarMode `mode` (array `name`, else number `id`);
+/// The grid as the engine should see it under ScalarMode `mode` (array `name`, else number `id`),
+/// a vector array taken as its magnitude or one component (art::TakeComponent's `component`);
 /// `key` names the choice (a change rebuilds the mesh); nullptr, with `error` set, when there is none.
-vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(
-  vtkUnstructuredGrid* grid, int mode, const char* name, int id, std::string& key, std::string& error);
+vtkSmartPointer<vtkUnstructuredGrid> SelectedScalars(vtkUnstructuredGrid* grid, int mode, const char* name, int id,
+  int component, std::string& key, std::string& error);
 /// engineGrid (grid, or a view sharing its cells) without the cells grid marks as ghosts.
 vtkSmartPointer<vtkUnstructuredGrid> WithoutGhosts(vtkUnstructuredGrid* engineGrid, vtkUnstructuredGrid* grid);
 /// The clipping planes (world coordinates) in the engine's: (a, b, c, d), a x + b y + c z + d >= 0 kept.

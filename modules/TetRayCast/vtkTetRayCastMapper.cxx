@@ -1,5 +1,7 @@
 #include "vtkTetRayCastMapper.h"
 
+#include "ArrayChoice.h"
+
 #include "Camera.h"
 #include "Error.h"
 #include "MapperGrid.h"
@@ -211,8 +213,11 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   // The array the usual vtkAbstractVolumeMapper settings select (ScalarMode, SelectScalarArray).
   std::string key, error;
+  const int component = this->VectorMode == MAGNITUDE ? art::Magnitude
+    : this->VectorMode == COMPONENT                   ? this->VectorComponent
+                                                      : art::WholeArray;
   vtkSmartPointer<vtkUnstructuredGrid> engineGrid = art::mapper::SelectedScalars(grid, this->ScalarMode,
-    this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME ? this->ArrayName : nullptr, this->ArrayId, key, error);
+    this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME ? this->ArrayName : nullptr, this->ArrayId, component, key, error);
   if (!engineGrid)
   {
     vtkErrorMacro(<< error);
@@ -449,6 +454,7 @@ void vtkTetRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EarlyRayTermination: " << this->EarlyRayTermination << "\n";
   os << indent << "TrapezoidRule: " << this->TrapezoidRule << "\n";
   os << indent << "IntermixIntersectingGeometry: " << this->IntermixIntersectingGeometry << "\n";
+  os << indent << "VectorMode: " << this->VectorMode << " (component " << this->VectorComponent << ")\n";
   os << indent << "IsoSurfaces: " << this->Impl->Isos.size() << "\n";
   os << indent << "LastRenderTime: " << this->LastRenderTime << "\n";
 }

@@ -15,7 +15,8 @@
  * by moving the mesh through its linear part (lengths in world units); such meshes are rebuilt
  * when that part changes, not when the volume only moves. Opaque geometry in the scene ends the
  * rays at its depth (IntermixIntersectingGeometry). The mapper's ScalarMode and SelectScalarArray
- * choose the field (cell values are averaged to the points); ghost cells (DUPLICATECELL in
+ * choose the field (cell values are averaged to the points), and VectorMode / VectorComponent what
+ * of a vector array (velocity, RGB) is drawn, as vtkSmartVolumeMapper has them; ghost cells (DUPLICATECELL in
  * vtkGhostType) are skipped, as VTK's mappers skip them. Clipping planes (AddClippingPlane,
  * world coordinates, the side the normal points to kept) cut the mesh itself, exact for its linear
  * field; moving a plane rebuilds the mesh. As VTK's own volume mappers, each frame fires
@@ -99,6 +100,24 @@ public:
   /** Tets crossed by all rays of the last image. */
   vtkGetMacro(LastTetsCrossed, double);
 
+  enum VectorModeType
+  {
+    DISABLED = -1, ///< a vector array is an error
+    MAGNITUDE = 0, ///< draw each tuple's Euclidean norm
+    COMPONENT = 1  ///< draw component VectorComponent
+  };
+  ///@{
+  /**
+   * What to draw of a scalar array of several components (vtkSmartVolumeMapper's VectorMode and
+   * VectorComponent): MAGNITUDE, COMPONENT VectorComponent (0-based), or DISABLED (the default:
+   * such an array is an error naming these settings).
+   */
+  vtkSetClampMacro(VectorMode, int, DISABLED, COMPONENT);
+  vtkGetMacro(VectorMode, int);
+  vtkSetClampMacro(VectorComponent, int, 0, 3);
+  vtkGetMacro(VectorComponent, int);
+  ///@}
+
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
   void ReleaseGraphicsResources(vtkWindow*) override;
 
@@ -116,6 +135,8 @@ protected:
   vtkTypeBool IntermixIntersectingGeometry = 1;
   double LastRenderTime = 0.0;
   double LastTetsCrossed = 0.0;
+  int VectorMode = DISABLED;
+  int VectorComponent = 0;
   int Warned = 0; ///< unsupported property settings already named: 1 shading, 2 gradient opacity
 
   /** Warns, once each, of property settings the mapper does not follow (shading, gradient opacity). */

@@ -2,8 +2,9 @@
 
 A 2 x 2 x 2 box seen straight on whose point scalars are 1 (green), a point array 'two' is 2
 (red), its cell scalars 'cellz' are 0 (blue) and a cell array also named 'two' is 0: each mode
-must show its array's colour at the closed-form opacity, switching modes re-renders, and a
-missing or vector array is an error naming it. Needs a display (skips with exit 77).
+must show its array's colour at the closed-form opacity, switching modes re-renders; a vector
+'velocity' shows its magnitude or a component under VectorMode; and a missing array, or a vector
+one without VectorMode, is an error naming it. Needs a display (skips with exit 77).
 """
 from mapper_scene import box_tets, constant_property, grab, look_down_z, offscreen_scene, require_display
 
@@ -17,6 +18,7 @@ from vtkmodules.vtkCommonCore import vtkCommand, vtkFloatArray
 import adaptivert
 
 grid = box_tets()
+ones = grid.GetPointData().GetScalars().GetName()
 
 
 def array(name, n, value, components=1):
@@ -29,7 +31,10 @@ def array(name, n, value, components=1):
 
 
 grid.GetPointData().AddArray(array("two", grid.GetNumberOfPoints(), 2.0))
-grid.GetPointData().AddArray(array("velocity", grid.GetNumberOfPoints(), 1.0, 3))
+velocity = array("velocity", grid.GetNumberOfPoints(), 0.0, 3)
+for i in range(grid.GetNumberOfPoints()):
+    velocity.SetTuple3(i, 0.6, 0.8, 0.0)  # magnitude 1 (green); components 0.6, 0.8 and 0 (blue)
+grid.GetPointData().AddArray(velocity)
 grid.GetCellData().SetScalars(array("cellz", grid.GetNumberOfCells(), 0.0))
 grid.GetCellData().AddArray(array("two", grid.GetNumberOfCells(), 0.0))
 
@@ -74,6 +79,18 @@ cases = [
     ("UseCellFieldData 'two'", lambda: (mapper.SetScalarModeToUseCellFieldData(), mapper.SelectScalarArray("two")), blue),
     ("UsePointFieldData by id 1", lambda: (mapper.SetScalarModeToUsePointFieldData(), mapper.SelectScalarArray(1)), red),
     ("back to default", lambda: mapper.SetScalarModeToDefault(), green),
+    # A vector array as vtkSmartVolumeMapper's VectorMode draws it: its magnitude or one component.
+    ("'velocity' magnitude", lambda: (mapper.SetScalarModeToUsePointFieldData(), mapper.SelectScalarArray("velocity"),
+                                      mapper.SetVectorMode(mapper.MAGNITUDE)), green),
+    ("'velocity' component 0", lambda: (mapper.SetVectorMode(mapper.COMPONENT), mapper.SetVectorComponent(0)),
+     a * np.array((0, 0.6, 0.4))),
+    ("'velocity' component 1", lambda: mapper.SetVectorComponent(1), a * np.array((0, 0.8, 0.2))),
+    ("'velocity' component 2", lambda: mapper.SetVectorComponent(2), blue),
+    ("'two' ignores VectorMode", lambda: mapper.SelectScalarArray("two"), red),
+    ("active point scalars a vector", lambda: (mapper.SetScalarModeToDefault(), mapper.SetVectorMode(mapper.MAGNITUDE),
+                                               grid.GetPointData().SetActiveScalars("velocity")), green),
+    ("active point scalars again", lambda: (mapper.SetVectorMode(mapper.DISABLED),
+                                            grid.GetPointData().SetActiveScalars(ones)), green),
 ]
 for label, select, want in cases:
     select()
@@ -86,8 +103,11 @@ for label, select, words in [
     ("missing", lambda: (mapper.SetScalarModeToUsePointFieldData(), mapper.SelectScalarArray("nope")),
      "no point array 'nope'"),
     ("vector", lambda: (mapper.SetScalarModeToUsePointFieldData(), mapper.SelectScalarArray("velocity")),
-     "'velocity' has 3 components; the mapper renders one"),
-    ("no cell scalars", lambda: (mapper.SetScalarModeToUseCellData(), grid.GetCellData().SetActiveScalars(None)),
+     "'velocity' has 3 components; the mapper renders one (SetVectorMode(vtkTetRayCastMapper::MAGNITUDE), or COMPONENT"),
+    ("component 3", lambda: (mapper.SetVectorMode(mapper.COMPONENT), mapper.SetVectorComponent(3)),
+     "array 'velocity' has 3 components (0 .. 2), not a component 3"),
+    ("no cell scalars", lambda: (mapper.SetVectorMode(mapper.DISABLED), mapper.SetScalarModeToUseCellData(),
+                                 grid.GetCellData().SetActiveScalars(None)),
      "no cell scalars"),
 ]:
     errors.clear()
