@@ -186,6 +186,22 @@ int vtkAdaptiveTetReducer::RequestData(
       selected->GetPointData()->SetScalars(chosen);
       image = selected;
     }
+    vtkNew<vtkImageData> reduced;
+    if (vtkDataArray* v = image->GetPointData()->GetScalars(); v && v->GetNumberOfComponents() > 1)
+    {
+      if (this->VectorMode == DISABLED)
+      {
+        vtkErrorMacro(<< "The array '" << (v->GetName() ? v->GetName() : "") << "' has " << v->GetNumberOfComponents()
+                      << " components; the reducer needs one (SetVectorMode(vtkAdaptiveTetReducer::MAGNITUDE), or "
+                         "COMPONENT with SetVectorComponent; or choose another with SetInputArrayToProcess).");
+        return 0;
+      }
+      // Its magnitude or one component, as the mappers draw a vector (VectorMode).
+      reduced->ShallowCopy(image);
+      reduced->GetPointData()->SetScalars(
+        art::TakeComponent(v, this->VectorMode == MAGNITUDE ? art::Magnitude : this->VectorComponent));
+      image = reduced;
+    }
     const art::VoxelVolume volume = art::VolumeFromImage(image);
     vtkDataArray* s = image->GetPointData()->GetScalars();
     const bool asDouble = s->GetDataType() == VTK_DOUBLE;
@@ -229,6 +245,7 @@ void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ClampToVoxels: " << this->ClampToVoxels << "\n";
   os << indent << "RelocateVertices: " << this->RelocateVertices << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
+  os << indent << "VectorMode: " << this->VectorMode << " (component " << this->VectorComponent << ")\n";
   os << indent << "Refinement: " << (this->Refinement == EDGE_SPLIT ? "EDGE_SPLIT" : "BISECTION") << "\n";
   os << indent << "Levels: " << this->Levels.size() << "\n";
   os << indent << "RMSError: " << this->RMSError << "\n";

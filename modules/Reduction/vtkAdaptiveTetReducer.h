@@ -119,6 +119,24 @@ public:
   void SetRefinementToBisection() { this->SetRefinement(BISECTION); }
   void SetRefinementToEdgeSplit() { this->SetRefinement(EDGE_SPLIT); }
 
+  enum VectorModeType
+  {
+    DISABLED = -1, ///< a vector array is an error
+    MAGNITUDE = 0, ///< reduce each tuple's Euclidean norm
+    COMPONENT = 1  ///< reduce component VectorComponent
+  };
+  ///@{
+  /**
+   * What to reduce of an array of several components (a velocity, an RGB volume), as
+   * vtkSmartVolumeMapper and vtkTetRayCastMapper draw it: MAGNITUDE, COMPONENT VectorComponent
+   * (0-based), or DISABLED (the default: such an array is an error naming these settings).
+   */
+  vtkSetClampMacro(VectorMode, int, DISABLED, COMPONENT);
+  vtkGetMacro(VectorMode, int);
+  vtkSetClampMacro(VectorComponent, int, 0, 3);
+  vtkGetMacro(VectorComponent, int);
+  ///@}
+
   /**
    * Nested budgets (tet counts) emitted on output port 1 from the same run.
    */
@@ -177,6 +195,8 @@ protected:
   double RefineFraction = 0.0;
   double SolverTolerance = 1e-8;
   int Refinement = BISECTION;
+  int VectorMode = DISABLED;
+  int VectorComponent = 0;
   std::vector<vtkIdType> Levels;
   double RMSError = 0.0, MaxError = 0.0, BuildSeconds = 0.0;
   double WeightedRMSError = 0.0, WeightedMaxError = 0.0;
