@@ -30,11 +30,14 @@
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <vector>
 
 namespace
 {
@@ -55,6 +58,9 @@ void Declare(cli::Options& o)
     "units, in mm; else the data's mean sample spacing, so any unit renders alike)");
   o.Add("iso", 0, "V[,V..]", "iso-surfaces at these scalar values (shaded, combined with the volume)");
   o.Add("iso-opacity", 0, "A", "opacity of every iso-surface", "1");
+  o.Add("clip", 0, "X,Y,Z,NX,NY,NZ[;..]",
+    "cut the volume by planes, each through a point with a normal, keeping the side the normal points "
+    "to (';' between planes; the error figures clip the reference alike)");
   o.Add("ert", 0, "A", "early ray termination at this opacity (1 = off)", "0.99");
   o.Add("integrator", 0, "RULE", "segment rule: exact or trapezoid (the paper's)", "exact");
   o.Add("mip", 0, "", "maximum-intensity projection instead of emission-absorption");
@@ -101,6 +107,38 @@ art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo,
   return f;
 }
 
+// --clip's planes "x,y,z,nx,ny,nz;..." as (a, b, c, d) = (n, -n.p): a x + b y + c z + d >= 0 kept.
+std::vector<std::array<double, 4>> ParsePlanes(const std::string& text)
+{
+  std::vector<std::array<double, 4>> planes;
+  std::stringstream all(text);
+  std::string one;
+  while (std::getline(all, one, ';'))
+  {
+    std::stringstream ss(one);
+    std::string item;
+    std::vector<double> v;
+    while (std::getline(ss, item, ','))
+    {
+      char* end = nullptr;
+      const double x = std::strtod(item.c_str(), &end);
+      v.push_back(!item.empty() && *end == '\0' && std::isfinite(x) ? x : std::nan(""));
+    }
+    if (v.size() != 6 || std::any_of(v.begin(), v.end(), [](double x) { return std::isnan(x); }) ||
+      !(v[3] * v[3] + v[4] * v[4] + v[5] * v[5] > 0))
+    {
+      throw cli::UsageError("--clip expects X,Y,Z,NX,NY,NZ (a point and a non-zero normal) per plane, "
+                            "planes separated by ';', got '" + text + "'");
+    }
+    planes.push_back({ v[3], v[4], v[5], -(v[0] * v[3] + v[1] * v[4] + v[2] * v[5]) });
+  }
+  if (planes.empty())
+  {
+    throw cli::UsageError("--clip expects X,Y,Z,NX,NY,NZ per plane, got '" + text + "'");
+  }
+  return planes;
+}
+
 art::RenderSettings MakeSettings(const cli::Options& o, art::TransferFunction tf)
 {
   art::RenderSettings s;
@@ -140,6 +178,10 @@ art::RenderSettings MakeSettings(const cli::Options& o, art::TransferFunction tf
       const auto& c = colours[s.isos.size() % 4];
       s.isos.push_back({ v, { { c[0], c[1], c[2] } }, a });
     }
+  }
+  if (o.Has("clip"))
+  {
+    s.clipPlanes = ParsePlanes(o.Get("clip"));
   }
   return s;
 }
@@ -285,6 +327,7 @@ int Run(const cli::Options& o, const std::string& input)
     auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf, input);
     rc.SetMaxIntensity(settings.mode == art::RenderSettings::Mode::MaxIntensity);
     rc.SetIsoSurfaces(settings.isos, settings.ambient, settings.diffuse);
+    rc.SetClipPlanes(settings.clipPlanes);
     st = rc.Render(cam, img, &progress);
   }
   else
@@ -298,6 +341,7 @@ int Run(const cli::Options& o, const std::string& input)
         auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf, input);
         rc.SetMaxIntensity(settings.mode == art::RenderSettings::Mode::MaxIntensity);
         rc.SetIsoSurfaces(settings.isos, settings.ambient, settings.diffuse);
+        rc.SetClipPlanes(settings.clipPlanes);
         rst = rc.Render(cam, ref, &progress);
         haveRef = true;
       }

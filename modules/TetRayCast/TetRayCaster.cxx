@@ -327,9 +327,9 @@ struct TetRayCaster::Impl
               // The walk still starts at the mesh's surface; nothing before the planes' interval
               // is integrated, and the ray ends where the interval does.
               double c0 = r.tmin, c1 = r.tmax;
-              if (!ClipToPlanes(clip, r, c0, c1))
+              if (!ClipToPlanes(clip, r, c0, c1) || !(std::max(c0, t0) < std::min(c1, t1)))
               {
-                continue;
+                continue; // nothing left, or only outside the mesh's box
               }
               from = std::max(from, c0);
               r.tmax = c1;
@@ -530,7 +530,7 @@ RayResult TetRayCaster::Cast(const Ray& ray) const
   if (!S.clipPlanes.empty())
   {
     double c0 = r.tmin, c1 = r.tmax;
-    if (!ClipToPlanes(S.clipPlanes, r, c0, c1))
+    if (!ClipToPlanes(S.clipPlanes, r, c0, c1) || !(std::max(c0, t0) < std::min(c1, t1)))
     {
       return res;
     }

@@ -183,7 +183,8 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
           ++c.rays;
           // Into the volume's own frame (a rotation about the origin: t and lengths unchanged).
           Ray r = cam.Generate(x, y);
-          if (!r.IsValid())
+          double c0 = r.tmin, c1 = r.tmax; // the planes' interval, in world coordinates
+          if (!r.IsValid() || !ClipToPlanes(Planes, r, c0, c1))
           {
             continue;
           }
@@ -197,7 +198,7 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
             }
           }
           double t0, t1;
-          if (!Box.Clip(r, t0, t1) || !(t1 > t0))
+          if (!Box.Clip(r, t0, t1) || !((t1 = std::min(t1, c1)) > (t0 = std::max(t0, c0))))
           {
             continue;
           }

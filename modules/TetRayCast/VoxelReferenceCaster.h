@@ -12,6 +12,7 @@
 #include "TetRayCaster.h"
 #include "TransferFunction.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,10 @@ public:
     Isos = std::move(isos), Ambient = ambient, Diffuse = diffuse;
   }
 
+  /// Clipping planes (a, b, c, d) in world coordinates: only a x + b y + c z + d >= 0 is drawn,
+  /// as RenderSettings::clipPlanes for the tet caster.
+  void SetClipPlanes(std::vector<std::array<double, 4>> planes) { Planes = std::move(planes); }
+
   RenderStats Render(const Camera& cam, Image& img, Progress* progress = nullptr) const;
   /// Trilinear value at p, in the volume's own axis-aligned frame (p inside the box).
   double Sample(const Vec3& p) const;
@@ -62,6 +67,7 @@ private:
   bool Mip = false;
   std::vector<IsoSurface> Isos;
   double Ambient = 0.3, Diffuse = 0.7;
+  std::vector<std::array<double, 4>> Planes;
 };
 } // namespace art
 

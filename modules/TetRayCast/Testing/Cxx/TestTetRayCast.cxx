@@ -211,6 +211,17 @@ TEST(TetRayCast, ClippingPlanesCutEachRay)
       box += m.Bounds().Clip(outside.Generate(x, y), t0, t1) ? 1 : 0;
     }
   EXPECT_LT(kept, box - 200) << "the planes cut rays off";
+  // The voxel reference (the same linear field sampled on the box's 5 x 4 x 6 grid) clips alike.
+  std::vector<double> values;
+  for (int k = 0; k < 6; ++k)
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 5; ++i)
+        values.push_back(Linear({ 0.25 * i, j / 3.0, 0.2 * k }));
+  const int dims[3] = { 5, 4, 6 };
+  VoxelReferenceCaster ref(values, dims, { 0, 0, 0 }, { 0.25, 1.0 / 3, 0.2 }, s.tf);
+  ref.SetClipPlanes(s.clipPlanes);
+  ref.Render(outside, img);
+  EXPECT_EQ(ExpectClosedForm(m, img, outside, LinearLo, LinearHi, nullptr, s.clipPlanes), kept);
   vtkNew<vtkCamera> vc;
   vc->SetPosition(0.37, 0.41, 0.53);
   vc->SetFocalPoint(0.9, 0.8, 0.7);
