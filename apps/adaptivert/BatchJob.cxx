@@ -108,6 +108,29 @@ T Field(const json& o, const char* key, T fallback, const std::string& file)
   }
 }
 
+// A misspelt key ("setting", "refrence", "azimut") was ignored without a word: the batch rendered
+// the default settings, no reference or camera 0 and reported success. Keys starting with '_' are
+// left for comments.
+void KnownKeys(const json& o, const std::set<std::string>& known, const std::string& where, const std::string& file)
+{
+  if (!o.is_object())
+  {
+    return;
+  }
+  for (const auto& [key, value] : o.items())
+  {
+    if (!known.count(key) && (key.empty() || key[0] != '_'))
+    {
+      std::string list;
+      for (const auto& k : known)
+      {
+        list += (list.empty() ? "" : ", ") + k;
+      }
+      throw art::Error("unknown key \"" + key + "\" in " + where + " (known: " + list + ")", file);
+    }
+  }
+}
+
 std::vector<Cam> Cameras(const json& j, const std::string& file)
 {
   std::vector<Cam> cams;
@@ -117,6 +140,7 @@ std::vector<Cam> Cameras(const json& j, const std::string& file)
   }
   else if (j.is_object())
   {
+    KnownKeys(j, { "orbit", "elevation", "zoom" }, "cameras", file);
     // Read as a double: 2.5 became 2 frames, and 1e10 overflowed an int.
     const double orbit = Field(j, "orbit", 1.0, file);
     if (!(orbit >= 1 && orbit <= 100000) || orbit != std::floor(orbit))
@@ -137,6 +161,7 @@ std::vector<Cam> Cameras(const json& j, const std::string& file)
     }
     for (const auto& c : j)
     {
+      KnownKeys(c, { "azimuth", "elevation", "zoom" }, "a camera", file);
       cams.push_back({ Field(c, "azimuth", 0.0, file), Field(c, "elevation", 0.0, file), Field(c, "zoom", 1.0, file) });
     }
   }
@@ -175,6 +200,11 @@ BatchJob LoadBatchJob(const std::string& path)
   try
   {
     const fs::path base = fs::absolute(path).parent_path();
+    if (!j.is_object())
+    {
+      throw art::Error("a job is a JSON object of \"datasets\", \"settings\", ...; got " + std::string(j.type_name()), path);
+    }
+    KnownKeys(j, { "output", "datasets", "size", "cameras", "settings", "reference" }, "the job", path);
     BatchJob job;
     job.file = path;
     job.outputDir = (base / Field(j, "output", std::string("frames"), path)).lexically_normal().string();

@@ -28,7 +28,8 @@ struct BatchJob
   std::vector<BatchTask> tasks; ///< references first, so others can compare as soon as possible
 };
 
-/// Parses and expands a job file; throws art::Error naming the file and the problem.
+/// Parses and expands a job file; throws art::Error naming the file and the problem (an unknown
+/// key too: keys starting with '_' are free for comments).
 ///
 /// {
 ///   "output": "frames",                       folder for images and results (relative to the job file)

@@ -89,11 +89,23 @@ json RunTask(const cli::BatchJob& job, const cli::BatchTask& t)
     { "wall_seconds", wall } };
   if (r.exitCode != 0)
   {
+    // The renderer's error is its last line (a warning may come first), less the
+    // "adaptivert: DATASET: " the batch's own message and the CSV's dataset column already give.
     std::ifstream in(log);
-    std::string first;
-    std::getline(in, first);
+    std::string line, last;
+    while (std::getline(in, line))
+    {
+      last = line.empty() ? last : line;
+    }
+    for (const std::string& prefix : { std::string("adaptivert: "), t.dataset + ": " })
+    {
+      if (last.compare(0, prefix.size(), prefix) == 0)
+      {
+        last.erase(0, prefix.size());
+      }
+    }
     res["status"] = "failed";
-    res["error"] = first.empty() ? "render exited with code " + std::to_string(r.exitCode) : first;
+    res["error"] = last.empty() ? "render exited with code " + std::to_string(r.exitCode) : last;
     return res;
   }
   std::error_code ec;
@@ -272,22 +284,33 @@ int Run(const cli::Options& o)
   }
   bar.Update(1.0, "batch");
   bar.Finish();
+  // Frames that failed in an earlier run fail this one too: a re-run (a CI step, a resumed job)
+  // reported 'tasks 6 (0 rendered now, 0 failed)' and exited 0 over four failed frames.
+  size_t failedAll = 0;
+  for (const auto& t : job.tasks)
+  {
+    json r;
+    failedAll += ReadResult(ResultPath(job, t.name), r) && r.value("status", "") != "ok" ? 1 : 0;
+  }
+  const size_t earlier = failedAll > failed ? failedAll - failed : 0;
   const std::string csv = job.outputDir + "/results.csv", chart = job.outputDir + "/speed_accuracy.png";
   WriteSummary(job, csv, chart, quiet);
   if (o.Flag("json"))
   {
     // Paths are escaped: a folder named with a quote or backslash gave JSON no parser reads.
-    const nlohmann::ordered_json j = { { "tasks", job.tasks.size() }, { "rendered", rendered }, { "failed", failed }, { "csv", csv },
-      { "chart", chart } };
+    const nlohmann::ordered_json j = { { "tasks", job.tasks.size() }, { "rendered", rendered }, { "failed", failedAll },
+      { "failed_earlier", earlier }, { "csv", csv }, { "chart", chart } };
     std::printf("%s\n", j.dump().c_str());
   }
   else
   {
-    std::printf("tasks        %zu (%zu rendered now, %zu failed)\n", job.tasks.size(), rendered, failed);
+    std::printf("tasks        %zu (%zu rendered now, %zu failed%s)\n", job.tasks.size(), rendered, failedAll,
+      earlier ? (", " + std::to_string(earlier) + " of them in an earlier run: --retry-failed renders them again").c_str()
+              : "");
     std::printf("results      %s\n", csv.c_str());
     std::printf("chart        %s\n", chart.c_str());
   }
-  return failed ? cli::ExitFailure : cli::ExitOk;
+  return failedAll ? cli::ExitFailure : cli::ExitOk;
 }
 
 cli::Registrar reg({ "batch",
