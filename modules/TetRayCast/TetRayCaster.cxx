@@ -247,6 +247,25 @@ struct TetRayCaster::Impl
     std::stable_sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) { return a.x.t < b.x.t; });
   }
 
+  // The clipping planes' interval of ray r (box interval [t0, t1]): the walk still starts at the
+  // mesh's surface, nothing before the interval is integrated (`from`) and the ray ends where it
+  // does (r.tmax). False when nothing of it is left inside the box.
+  static bool CutByPlanes(const std::vector<std::array<double, 4>>& planes, Ray& r, double t0, double t1, double& from)
+  {
+    if (planes.empty())
+    {
+      return true;
+    }
+    double c0 = r.tmin, c1 = r.tmax;
+    if (!ClipToPlanes(planes, r, c0, c1) || !(std::max(c0, t0) < std::min(c1, t1)))
+    {
+      return false;
+    }
+    from = std::max(from, c0);
+    r.tmax = c1;
+    return true;
+  }
+
   template <class Rule>
   static RenderStats RenderWith(const TetRayCaster& rc, const Rule& rule, const Camera& cam, Image& img, Progress* p,
     const std::vector<double>* ends)
@@ -263,7 +282,6 @@ struct TetRayCaster::Impl
       finder = std::make_unique<const EntryFinder>(rc.M, cam);
     }
     const bool parallel = cam.IsParallel();
-    const auto& clip = rc.S.clipPlanes;
     const int eyeTet = !parallel && rc.M.Bounds().Contains(cam.Position()) ? rc.M.Locate(cam.Position()) : -1;
     std::atomic<std::uint64_t> nudges{ 0 };
     std::unique_ptr<const ProjectedView> view;
@@ -322,17 +340,9 @@ struct TetRayCaster::Impl
               from = r.tmin;
               r.tmin = std::min(l0, r.tmin) - 1e-6 * (l1 - l0); // the box's faces a margin inside
             }
-            if (!clip.empty())
+            if (!CutByPlanes(rc.S.clipPlanes, r, t0, t1, from))
             {
-              // The walk still starts at the mesh's surface; nothing before the planes' interval
-              // is integrated, and the ray ends where the interval does.
-              double c0 = r.tmin, c1 = r.tmax;
-              if (!ClipToPlanes(clip, r, c0, c1) || !(std::max(c0, t0) < std::min(c1, t1)))
-              {
-                continue; // nothing left, or only outside the mesh's box
-              }
-              from = std::max(from, c0);
-              r.tmax = c1;
+              continue;
             }
             const TetWalker w(rc.M, r);
             std::optional<ProjectedWalker> pw;
@@ -527,15 +537,9 @@ RayResult TetRayCaster::Cast(const Ray& ray) const
   }
   Ray r = ray;
   double from = -std::numeric_limits<double>::infinity();
-  if (!S.clipPlanes.empty())
+  if (!Impl::CutByPlanes(S.clipPlanes, r, t0, t1, from))
   {
-    double c0 = r.tmin, c1 = r.tmax;
-    if (!ClipToPlanes(S.clipPlanes, r, c0, c1) || !(std::max(c0, t0) < std::min(c1, t1)))
-    {
-      return res;
-    }
-    from = c0;
-    r.tmax = c1;
+    return res;
   }
   const EntryFinder finder(M);
   const TetWalker w(M, r);
