@@ -1,4 +1,5 @@
 // adaptivert info FILE...: what a volume, surface or mesh holds.
+#include "ArrayChoice.h"
 #include "Command.h"
 #include "AtomicFile.h"
 #include "DataLoader.h"
@@ -158,8 +159,9 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
     const double* sp = img->GetSpacing();
     const double* o = img->GetOrigin();
     vtkDataArray* s = img->GetPointData()->GetScalars();
+    // A vector's range is its magnitude's (as ParaView gives it): component 0's said nothing of it.
     double r[2];
-    s->GetRange(r, 0);
+    s->GetRange(r, s->GetNumberOfComponents() > 1 ? -1 : 0);
     Out(text, "  dimensions   %d x %d x %d (%s voxels)\n", d[0], d[1], d[2],
       Grouped(static_cast<long long>(d[0]) * d[1] * d[2]).c_str());
     Out(text, "  spacing      %g x %g x %g\n", sp[0], sp[1], sp[2]);
@@ -175,8 +177,10 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
     }
     Out(text, "  bounds       %s\n", Bounds(img).c_str());
     Orientation(path, img, text, j);
-    Out(text, "  scalars      %s, %d component%s, range %s\n", s->GetDataTypeAsString(),
-      s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "", Range(r[0], r[1], " .. ").c_str());
+    Out(text, "  scalars      %s, %d component%s, %srange %s%s\n", s->GetDataTypeAsString(),
+      s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "",
+      s->GetNumberOfComponents() > 1 ? "magnitude " : "", Range(r[0], r[1], " .. ").c_str(),
+      s->GetNumberOfComponents() > 1 ? (" (--array " + art::ComponentHint(s) + ")").c_str() : "");
     if (img->GetPointData()->GetNumberOfArrays() > 1)
     {
       Out(text, "  point data   %s (--array picks one)\n", ArrayList(img->GetPointData()).c_str());
