@@ -231,10 +231,15 @@ BatchJob LoadBatchJob(const std::string& path)
       const std::string ds = (base / d.get<std::string>()).lexically_normal().string();
       // Frames are named after the file; two files of one name (a/ct.mha, b/ct.mha) shared their
       // frames, and the second was never rendered. Later ones get -2, -3, .. (stable per job file).
-      std::string stem = fs::path(ds).stem().string();
+      // A DICOM folder written with its trailing slash ("series/") has no stem: its frames were
+      // named "_c000_s00.png". A folder is named whole (a dot in it is no extension).
+      fs::path named(ds);
+      named = named.has_filename() ? named : named.parent_path();
+      const std::string plain = fs::is_directory(named, ec) ? named.filename().string() : named.stem().string();
+      std::string stem = plain;
       for (int n = 2; !stems.insert(stem).second; ++n)
       {
-        stem = fs::path(ds).stem().string() + "-" + std::to_string(n);
+        stem = plain + "-" + std::to_string(n);
       }
       art::DataKind dsKind;
       const art::DataKind* kind = nullptr;
