@@ -28,11 +28,13 @@ ViewerApp::ViewerApp(ViewerOptions options)
 {
   Impl->Opt = std::move(options);
   Impl->Scene = LoadScene(Impl->Opt.File, Impl->Opt.TransferFunction, Impl->Opt.Array);
-  if (!Impl->Opt.Array.empty())
+  if (!Impl->Scene.ArrayName.empty())
   {
-    // The mapper picks the same array by name (point or cell data) from every level's grid.
-    Impl->Mapper->SetScalarModeToUsePointFieldData();
-    Impl->Mapper->SelectScalarArray(Impl->Opt.Array.c_str());
+    // The mapper picks the same array by name from every level's grid: a mesh's cell array among
+    // the cell data (looked for among the points, it was an error every frame and a blank view).
+    Impl->Scene.ArrayOnCells ? Impl->Mapper->SetScalarModeToUseCellFieldData()
+                             : Impl->Mapper->SetScalarModeToUsePointFieldData();
+    Impl->Mapper->SelectScalarArray(Impl->Scene.ArrayName.c_str());
   }
   if (!Impl->Opt.Script.empty())
   {

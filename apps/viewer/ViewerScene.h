@@ -29,6 +29,10 @@ struct ViewerScene
   art::Box3 Bounds;
   double Range[2] = { 0, 1 };
   std::string Note; ///< one line about the data, for the status text
+  /// The array shown, as the levels' grids name it ("velocity:magnitude" for --array
+  /// velocity:mag); empty for the active scalars.
+  std::string ArrayName;
+  bool ArrayOnCells = false; ///< ArrayName is a mesh's cell array (the mapper looks there)
 
   void AddLevel(vtkSmartPointer<vtkUnstructuredGrid> grid, long long tets, double rms);
 };
