@@ -1,5 +1,4 @@
 #include "ViewerScene.h"
-#include "ArrayChoice.h"
 
 #include "DataLoader.h"
 #include "Error.h"
@@ -50,44 +49,6 @@ void ViewerScene::AddLevel(vtkSmartPointer<vtkUnstructuredGrid> grid, long long 
   LevelLabels.push_back(buf);
 }
 
-namespace
-{
-// --array NAME:magnitude or NAME:N on a mesh: the vector's magnitude or component joins the grid's
-// point (or cell) data beside it, and its name is what the mesh and the mapper look up.
-std::string MeshComponent(vtkUnstructuredGrid* grid, const std::string& array, const std::string& file)
-{
-  int component;
-  const std::string name = art::SplitComponent(array, &component);
-  if (component == art::WholeArray)
-  {
-    return array;
-  }
-  vtkDataSetAttributes* where = grid->GetPointData();
-  vtkDataArray* a = art::ChooseArray(where, name, true);
-  if (!a)
-  {
-    where = grid->GetCellData();
-    a = art::ChooseArray(where, name, true);
-  }
-  if (!a)
-  {
-    throw art::Error("mesh has no point or cell array '" + name + "' (it has: " +
-        art::ArrayNames({ grid->GetPointData(), grid->GetCellData() }) + ")",
-      file);
-  }
-  try
-  {
-    vtkSmartPointer<vtkDataArray> one = art::TakeComponent(a, component);
-    where->AddArray(one);
-    return one->GetName();
-  }
-  catch (const art::Error& e)
-  {
-    throw art::Error(e.problem(), file);
-  }
-}
-} // namespace
-
 ViewerScene LoadScene(const std::string& file, const std::string& tf, const std::string& array)
 {
   ViewerScene s;
@@ -126,7 +87,7 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const std:
   {
     vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(data);
     std::string note;
-    s.ArrayName = MeshComponent(grid, array, file);
+    s.ArrayName = art::AddComponentArray(grid, array, file); // NAME:magnitude, NAME:N
     s.ArrayOnCells = !s.ArrayName.empty() && !grid->GetPointData()->GetArray(s.ArrayName.c_str()) &&
       grid->GetCellData()->GetArray(s.ArrayName.c_str());
     const art::TetMesh mesh = art::TetMesh::FromVTK(grid, s.ArrayName, &note, file); // checks scalars and cells

@@ -1,4 +1,5 @@
 #include "DataLoader.h"
+#include "ArrayChoice.h"
 #include "AtomicFile.h"
 #include "Error.h"
 #include "ObjReader.h"
@@ -282,6 +283,39 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   }
   CheckPolyIndices(pd, path);
   return pd;
+}
+
+std::string AddComponentArray(vtkDataSet* data, const std::string& array, const std::string& path)
+{
+  int component;
+  const std::string name = SplitComponent(array, &component);
+  if (component == WholeArray)
+  {
+    return array;
+  }
+  vtkDataSetAttributes* where = data->GetPointData();
+  vtkDataArray* a = ChooseArray(where, name, true);
+  if (!a)
+  {
+    where = data->GetCellData();
+    a = ChooseArray(where, name, true);
+  }
+  if (!a)
+  {
+    throw Error("has no point or cell array '" + name + "' (it has: " +
+        ArrayNames({ data->GetPointData(), data->GetCellData() }) + ")",
+      path);
+  }
+  try
+  {
+    vtkSmartPointer<vtkDataArray> one = TakeComponent(a, component);
+    where->AddArray(one);
+    return one->GetName();
+  }
+  catch (const Error& e)
+  {
+    throw Error(e.problem(), path);
+  }
 }
 
 vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)

@@ -11,6 +11,7 @@
 #include <string>
 
 class vtkDataObject;
+class vtkDataSet;
 class vtkImageData;
 class vtkPolyData;
 class vtkUnstructuredGrid;
@@ -38,6 +39,11 @@ ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> LoadVolume(const std::string& 
 ADAPTIVERTIO_EXPORT void RequireOneComponent(vtkImageData* volume, const std::string& path);
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path);
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path);
+/// For `--array NAME:magnitude` or `NAME:N` on a mesh (art::SplitComponent): adds the vector's
+/// magnitude or component N beside it (in its point data, else its cell data) and returns the new
+/// array's name ("NAME:magnitude", "NAME:N") to look up; any other `array` comes back as it is.
+/// A missing array or component is an art::Error naming `path`.
+ADAPTIVERTIO_EXPORT std::string AddComponentArray(vtkDataSet* data, const std::string& array, const std::string& path);
 /// Loads whatever the extension says; the result is one of the three types above.
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkDataObject> Load(const std::string& path, DataKind* kind = nullptr);
 

@@ -790,3 +790,37 @@ TEST(DataLoader, TruncatedNrrd)
     ExpectError(dir + "series.nhdr", "is a series of files, which VTK's NRRD reader cannot read");
   }
 }
+
+// The same choice on a mesh (the viewer's --array; render's for meshes needs it too): the vector's
+// magnitude or component joins its data beside it, under the name to look up.
+TEST(DataLoader, MeshVectorMagnitudeOrComponent)
+{
+  const std::string path = std::string(ART_SOURCE_DIR) + "/tests/data/vectors/velocity-box.vtu";
+  auto grid = art::LoadMesh(path);
+  EXPECT_EQ(art::AddComponentArray(grid, "velocity", path), "velocity");
+  EXPECT_EQ(art::AddComponentArray(grid, "velocity:Magnitude", path), "velocity:magnitude");
+  EXPECT_EQ(art::AddComponentArray(grid, "velocity:z", path), "velocity:2");
+  EXPECT_EQ(art::AddComponentArray(grid, "region:0", path), "region:0");
+  vtkDataArray* v = grid->GetPointData()->GetArray("velocity");
+  vtkDataArray* m = grid->GetPointData()->GetArray("velocity:magnitude");
+  vtkDataArray* z = grid->GetPointData()->GetArray("velocity:2");
+  ASSERT_TRUE(v && m && z);
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    const double* t = v->GetTuple3(i);
+    EXPECT_DOUBLE_EQ(m->GetTuple1(i), std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]));
+    EXPECT_EQ(z->GetTuple1(i), t[2]);
+  }
+  EXPECT_TRUE(grid->GetCellData()->GetArray("region:0")); // a cell array's stays with the cells
+  try
+  {
+    art::AddComponentArray(grid, "speed:magnitude", path);
+    ADD_FAILURE() << "no error";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("velocity-box.vtu: has no point or cell array 'speed' (it has: velocity"),
+      std::string::npos)
+      << e.what();
+  }
+}
