@@ -73,6 +73,19 @@ json LastJsonLine(const std::string& out)
   return j;
 }
 
+// What a frame was rendered from: its data set, its render arguments and its reference's. A result
+// whose key differs was rendered for another version of the job file (a setting, size or camera
+// changed) and is rendered again; it used to count as done, so an edited job kept its old images.
+json TaskKey(const cli::BatchJob& job, const cli::BatchTask& t)
+{
+  json ref;
+  for (const auto& r : job.tasks)
+  {
+    ref = !t.reference.empty() && r.name == t.reference ? json(r.args) : ref;
+  }
+  return { { "dataset", t.dataset }, { "args", t.args }, { "reference_args", ref } };
+}
+
 json RunTask(const cli::BatchJob& job, const cli::BatchTask& t)
 {
   const std::string image = job.outputDir + "/" + t.name + ".png";
@@ -86,7 +99,7 @@ json RunTask(const cli::BatchJob& job, const cli::BatchTask& t)
 
   json res = { { "name", t.name }, { "dataset", t.dataset }, { "camera", t.camera },
     { "setting", t.setting }, { "reference", t.isReference }, { "image", image },
-    { "wall_seconds", wall } };
+    { "wall_seconds", wall }, { "key", TaskKey(job, t) } };
   if (r.exitCode != 0)
   {
     // The renderer's error is its last line (a warning may come first), less the
@@ -219,6 +232,21 @@ int Run(const cli::Options& o)
   if (!fs::is_directory(job.outputDir))
   {
     throw art::Error("cannot create output folder '" + job.outputDir + "'", job.file);
+  }
+  size_t stale = 0;
+  for (const auto& t : job.tasks)
+  {
+    json r;
+    if (ReadResult(ResultPath(job, t.name), r) && r.contains("key") && r["key"] != TaskKey(job, t))
+    {
+      fs::remove(ResultPath(job, t.name), ec);
+      ++stale;
+    }
+  }
+  if (stale && !o.Flag("quiet"))
+  {
+    std::fprintf(stderr, "adaptivert: %s: %zu frame%s in %s rendered with other settings: rendering again\n",
+      job.file.c_str(), stale, stale == 1 ? " was" : "s were", job.outputDir.c_str());
   }
   if (o.Flag("retry-failed"))
   {
