@@ -245,8 +245,8 @@ int Run(const cli::Options& o)
   }
   if (stale && !o.Flag("quiet"))
   {
-    std::fprintf(stderr, "adaptivert: %s: %zu frame%s in %s rendered with other settings: rendering again\n",
-      job.file.c_str(), stale, stale == 1 ? " was" : "s were", job.outputDir.c_str());
+    std::fprintf(stderr, "adaptivert: %s: %zu frame%s in %s %s rendered with other settings: rendering again\n",
+      job.file.c_str(), stale, stale == 1 ? "" : "s", job.outputDir.c_str(), stale == 1 ? "was" : "were");
   }
   if (o.Flag("retry-failed"))
   {
