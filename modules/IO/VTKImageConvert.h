@@ -1,5 +1,6 @@
 // VTKImageConvert: art::Image <-> vtkImageData. VTK images have row 0 at the bottom and art
-// images at the top, so rows are flipped; unsigned char data is scaled to [0, 1].
+// images at the top, so rows are flipped; integer data is scaled by its type's
+// largest value (unsigned char and unsigned short to [0, 1]), floating-point data kept as it is.
 #ifndef art_VTKImageConvert_h
 #define art_VTKImageConvert_h
 

@@ -2,8 +2,9 @@
  * @class vtkImageMetrics
  * @brief Image error metrics (RMSE, PSNR, SSIM) between two 2-D images or image files.
  *
- * Images may have 1 to 4 components of any scalar type; unsigned char values are scaled by
- * 1/255, others are taken as values in [0, 1]. Files are read as art::ReadImage reads them (PNG
+ * Images may have 1 to 4 components of any scalar type; integer values are scaled by their
+ * type's largest value (1/255 for unsigned char, 1/65535 for unsigned short), floating-point
+ * values are taken as values in [0, 1]. Files are read as art::ReadImage reads them (PNG
  * through VTK; EXR, TIFF and others through OpenImageIO). After a successful Compare the
  * figures are available through the getters; on failure Compare returns false and
  * GetErrorMessage() says why.

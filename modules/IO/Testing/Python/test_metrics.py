@@ -35,4 +35,22 @@ nan = constant_image(0.25)
 nan.GetPointData().GetScalars().SetComponent(3, 1, float("nan"))
 assert not m.Compare(nan, constant_image(0.25))
 assert "NaN or infinite" in m.GetErrorMessage(), m.GetErrorMessage()
+# Integer images are fractions of their type's largest value: the same picture in 8 and 16 bits
+# (as vtkPNGReader gives a 16-bit PNG) is identical; 16 bits read as values up to 65535 gave -90 dB.
+from vtkmodules.vtkCommonCore import vtkUnsignedCharArray, vtkUnsignedShortArray
+
+
+def ramp(array_type, scale):
+    img = vtkImageData()
+    img.SetDimensions(16, 16, 1)
+    a = array_type()
+    a.SetNumberOfTuples(256)
+    for i in range(256):
+        a.SetValue(i, i * scale)
+    img.GetPointData().SetScalars(a)
+    return img
+
+
+assert m.Compare(ramp(vtkUnsignedCharArray, 1), ramp(vtkUnsignedShortArray, 257)), m.GetErrorMessage()
+assert m.GetRMSE() < 1e-6 and m.GetMaxAbsDifference() < 1e-6, (m.GetRMSE(), m.GetPSNR())
 print("ok", adaptivert.__version__, file=sys.stderr)
