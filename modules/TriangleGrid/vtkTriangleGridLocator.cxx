@@ -3,6 +3,7 @@
 #include "Accelerator.h"
 #include "Error.h"
 
+#include <vtkCell.h>
 #include <vtkCellArray.h>
 #include <vtkCellType.h>
 #include <vtkGenericCell.h>
@@ -11,6 +12,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,6 +33,65 @@ art::Ray SegmentRay(const double p1[3], const double p2[3], const double origin[
   r.tmin = 0;
   r.tmax = 1;
   return r;
+}
+
+// Any other data set (an unstructured grid of triangles from a clip, a one-slice image of pixels)
+// as a polydata of its 2-D cells, `original` naming each cell's id in `ds` (polygons first, then
+// strips, as vtkPolyData numbers them). Vertices and lines are counted in `others`, 3-D cells in
+// `solids`; neither is added.
+vtkSmartPointer<vtkPolyData> SurfaceOf(
+  vtkDataSet* ds, std::vector<vtkIdType>& original, vtkIdType& others, vtkIdType& solids)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  pts->SetNumberOfPoints(ds->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < ds->GetNumberOfPoints(); ++i)
+  {
+    pts->SetPoint(i, ds->GetPoint(i));
+  }
+  pd->SetPoints(pts);
+  vtkNew<vtkCellArray> polys, strips;
+  std::vector<vtkIdType> stripIds;
+  vtkNew<vtkGenericCell> cell;
+  others = solids = 0;
+  for (vtkIdType c = 0; c < ds->GetNumberOfCells(); ++c)
+  {
+    ds->GetCell(c, cell);
+    vtkIdList* ids = cell->GetPointIds();
+    const int type = cell->GetCellType();
+    if (cell->GetCellDimension() == 3)
+    {
+      ++solids;
+    }
+    else if (cell->GetCellDimension() < 2 || type == VTK_EMPTY_CELL)
+    {
+      others += type == VTK_EMPTY_CELL ? 0 : 1;
+    }
+    else if (type == VTK_TRIANGLE_STRIP)
+    {
+      strips->InsertNextCell(ids);
+      stripIds.push_back(c);
+    }
+    else if (type == VTK_PIXEL)
+    {
+      // A pixel's corners go row by row; a quad's go round.
+      const vtkIdType q[4] = { ids->GetId(0), ids->GetId(1), ids->GetId(3), ids->GetId(2) };
+      polys->InsertNextCell(4, q);
+      original.push_back(c);
+    }
+    else
+    {
+      // Triangles, quads, polygons; a quadratic cell by its corners (the first, linear, points).
+      const vtkIdType corners = cell->IsLinear() ? ids->GetNumberOfIds() : cell->GetNumberOfEdges();
+      polys->InsertNextCell(corners, ids->GetPointer(0));
+      original.push_back(c);
+    }
+  }
+  pd->SetPolys(polys);
+  pd->SetStrips(strips);
+  original.insert(original.end(), stripIds.begin(), stripIds.end());
+  return pd;
 }
 } // namespace
 
@@ -69,17 +130,35 @@ void vtkTriangleGridLocator::BuildLocatorInternal()
   this->FreeSearchStructure();
   this->Built = true;
   this->BuildTime.Modified();
-  auto* pd = vtkPolyData::SafeDownCast(this->DataSet);
-  if (!pd)
+  this->OriginalIds.clear();
+  if (!this->DataSet)
   {
-    vtkErrorMacro(<< "needs a vtkPolyData input, got " << (this->DataSet ? this->DataSet->GetClassName() : "none"));
+    vtkErrorMacro(<< "no dataset to locate in");
     return;
   }
-  const vtkIdType others = pd->GetNumberOfVerts() + pd->GetNumberOfLines();
+  vtkSmartPointer<vtkPolyData> pd = vtkPolyData::SafeDownCast(this->DataSet);
+  vtkIdType others = 0;
+  if (pd)
+  {
+    others = pd->GetNumberOfVerts() + pd->GetNumberOfLines();
+  }
+  else
+  {
+    // Any data set's surface cells, as vtkCellLocator takes them (it said 'needs a vtkPolyData').
+    vtkIdType solids = 0;
+    pd = SurfaceOf(this->DataSet, this->OriginalIds, others, solids);
+    if (solids > 0)
+    {
+      vtkErrorMacro(<< "the " << this->DataSet->GetClassName() << " has " << solids
+                    << " 3-D cells; this locator finds surfaces (extract one first, e.g. with vtkGeometryFilter)");
+      this->OriginalIds.clear();
+      return;
+    }
+  }
   if (pd->GetNumberOfPolys() + pd->GetNumberOfStrips() == 0)
   {
-    vtkErrorMacro(<< "the dataset has no polygons or triangle strips to locate (" << pd->GetNumberOfCells()
-                  << " cells: " << pd->GetNumberOfVerts() << " vertex, " << pd->GetNumberOfLines() << " line)");
+    vtkErrorMacro(<< "the dataset has no polygons or triangle strips to locate (" << this->DataSet->GetNumberOfCells()
+                  << " cells: " << others << " vertex or line)");
     return;
   }
   if (others > 0)
@@ -138,7 +217,7 @@ int vtkTriangleGridLocator::IntersectWithLine(const double p1[3], const double p
   pcoords[0] = h.u;
   pcoords[1] = h.v;
   pcoords[2] = 0;
-  cellId = h.triangle;
+  cellId = this->Original(h.triangle);
   if (this->DataSet->GetCellType(cellId) != VTK_TRIANGLE)
   {
     // u, v belong to the triangle of the cell's triangulation that was hit; a quad's, polygon's
@@ -187,7 +266,7 @@ int vtkTriangleGridLocator::IntersectWithLine(
     }
     if (cellIds)
     {
-      cellIds->InsertNextId(h.triangle);
+      cellIds->InsertNextId(this->Original(h.triangle));
     }
   }
   if (hits.empty())
@@ -215,7 +294,7 @@ void vtkTriangleGridLocator::FindCellsAlongLine(const double p1[3], const double
   this->Engine->Candidates(r, ids, c);
   for (long long id : ids)
   {
-    cells->InsertNextId(id);
+    cells->InsertNextId(this->Original(id));
   }
 }
 
@@ -239,7 +318,7 @@ bool vtkTriangleGridLocator::Nearest(const double x[3], double maxDist2, double 
   closestPoint[0] = p.x;
   closestPoint[1] = p.y;
   closestPoint[2] = p.z;
-  cellId = np.triangle;
+  cellId = this->Original(np.triangle);
   dist2 = np.dist2;
   inside = np.inside;
   return true;
@@ -310,7 +389,7 @@ void vtkTriangleGridLocator::FindCellsWithinBounds(double* bbox, vtkIdList* cell
   this->Engine->InBox(b, ids, c);
   for (long long id : ids)
   {
-    cells->InsertNextId(id);
+    cells->InsertNextId(this->Original(id));
   }
 }
 

@@ -30,7 +30,9 @@
  *   same cell or an equally near one.)
  *
  * Only polygons and strips are located: vertex and line cells are ignored (with a warning), and a
- * dataset with no polygons is an error. BuildLocator rebuilds when the locator or its dataset was
+ * dataset with no polygons is an error. The dataset may be any vtkDataSet of surface cells, as for
+ * vtkCellLocator (an unstructured grid of triangles and quads, a one-slice image's pixels; a
+ * quadratic cell by its corners); one with 3-D cells is an error. BuildLocator rebuilds when the locator or its dataset was
  * modified since the last build, unless UseExistingSearchStructure is on and a structure exists
  * (then the structure, and the geometry it copied, is kept).
  */
@@ -41,6 +43,7 @@
 #include "vtkAbstractCellLocator.h"
 
 #include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
 
 namespace art
 {
@@ -145,6 +148,13 @@ private:
   void operator=(const vtkTriangleGridLocator&) = delete;
 
   std::unique_ptr<art::Accelerator> Engine;
+  // For a data set that is no vtkPolyData: the data set's id of each cell of the surface built
+  // from it (empty for a polydata, whose ids are the engine's).
+  std::vector<vtkIdType> OriginalIds;
+  vtkIdType Original(long long id) const
+  {
+    return this->OriginalIds.empty() ? static_cast<vtkIdType>(id) : this->OriginalIds[static_cast<size_t>(id)];
+  }
   bool Built = false; // a build was tried (it may have failed: no triangles) since the last free
   double Origin[3] = { 0, 0, 0 }; // the engine's coordinates are taken from here (far scenes)
 };

@@ -100,7 +100,7 @@ inline std::vector<std::array<double, 3>> QueryPoints(vtkPolyData* pd, size_t n,
 }
 
 // Squared distance from x to cell `id` by the cell's own EvaluatePosition (VTK's measure).
-inline double CellDistance2(vtkPolyData* pd, vtkIdType id, const double x[3], int* inside = nullptr)
+inline double CellDistance2(vtkDataSet* pd, vtkIdType id, const double x[3], int* inside = nullptr)
 {
   vtkNew<vtkGenericCell> cell;
   pd->GetCell(id, cell);

@@ -4,9 +4,12 @@
 // a line hit's pcoords on quads and polygons.
 #include "LocatorTestUtil.h"
 
+#include <vtkAppendFilter.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellLocator.h>
+#include <vtkImageData.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkMath.h>
 #include <vtkPoints.h>
 #include <vtkStaticCellLocator.h>
@@ -375,4 +378,81 @@ TEST(LocatorQueries, LineHitGivesTheCellsOwnPcoords)
       EXPECT_GT(hits, 50);
     }
   }
+}
+
+TEST(LocatorQueries, AnyDataSetOfSurfaceCells)
+{
+  // vtkCellLocator takes any vtkDataSet; this one said 'needs a vtkPolyData input' to an
+  // unstructured grid of triangles (a clipped surface) and to an image slice of pixels. Their line
+  // hits and closest cells must be vtkCellLocator's (cells named by the data set's own ids).
+  vtkNew<vtkAppendFilter> append;
+  append->AddInputData(StripSphere());
+  append->Update();
+  vtkNew<vtkImageData> slice;
+  slice->SetDimensions(7, 5, 1);
+  slice->SetSpacing(0.5, 0.75, 1);
+  slice->SetOrigin(1.5, -2, 2);
+  for (vtkDataSet* ds : { static_cast<vtkDataSet*>(append->GetOutput()), static_cast<vtkDataSet*>(slice.GetPointer()) })
+  {
+    vtkNew<vtkCellLocator> ref;
+    ref->SetDataSet(ds);
+    ref->BuildLocator();
+    vtkNew<vtkTriangleGridLocator> loc;
+    loc->SetDataSet(ds);
+    loc->BuildLocator();
+    ASSERT_GT(loc->GetNumberOfTriangles(), 0) << ds->GetClassName();
+    double b[6];
+    ds->GetBounds(b);
+    std::mt19937_64 g(9);
+    std::uniform_real_distribution<double> u(0, 1);
+    vtkNew<vtkGenericCell> cell;
+    int hits = 0;
+    for (int i = 0; i < 200; ++i)
+    {
+      const double p1[3] = { b[0] + u(g) * (b[1] - b[0]), b[2] + u(g) * (b[3] - b[2]), b[5] + 2 };
+      const double p2[3] = { b[0] + u(g) * (b[1] - b[0]), b[2] + u(g) * (b[3] - b[2]), b[4] - 2 };
+      double t, x[3], pc[3], rt, rx[3], rpc[3];
+      int sub, rsub;
+      vtkIdType id = -1, rid = -1;
+      const int hit = loc->IntersectWithLine(p1, p2, 0.0, t, x, pc, sub, id, cell);
+      ASSERT_EQ(hit, ref->IntersectWithLine(p1, p2, 0.0, rt, rx, rpc, rsub, rid, cell));
+      if (hit)
+      {
+        ++hits;
+        EXPECT_EQ(id, rid) << ds->GetClassName();
+        EXPECT_NEAR(t, rt, 1e-6);
+      }
+      // The closest cell of a point above the surface: as near as VTK's (ties may differ).
+      double q[3] = { p1[0], p1[1], b[5] + 0.3 }, cp[3], rcp[3], d2, rd2;
+      vtkIdType c, rc;
+      loc->FindClosestPoint(q, cp, cell, c, sub, d2);
+      ref->FindClosestPoint(q, rcp, cell, rc, rsub, rd2);
+      EXPECT_NEAR(d2, rd2, 1e-9);
+      EXPECT_NEAR(CellDistance2(ds, c, q), d2, 1e-9) << "cell " << c << " of " << ds->GetClassName();
+    }
+    EXPECT_GT(hits, 100);
+  }
+  // A grid of tets is refused in one error (this locator finds surfaces), no crash after it.
+  vtkNew<vtkPoints> corners;
+  corners->InsertNextPoint(0, 0, 0);
+  corners->InsertNextPoint(1, 0, 0);
+  corners->InsertNextPoint(0, 1, 0);
+  corners->InsertNextPoint(0, 0, 1);
+  vtkNew<vtkUnstructuredGrid> tet;
+  tet->SetPoints(corners);
+  const vtkIdType four[4] = { 0, 1, 2, 3 };
+  tet->InsertNextCell(VTK_TETRA, 4, four);
+  int errors = 0;
+  vtkNew<vtkCallbackCommand> count;
+  count->SetClientData(&errors);
+  count->SetCallback([](vtkObject*, unsigned long, void* cd, void*) { ++*static_cast<int*>(cd); });
+  vtkNew<vtkTriangleGridLocator> loc;
+  loc->AddObserver(vtkCommand::ErrorEvent, count);
+  loc->SetDataSet(tet);
+  double x[3] = { 0.5, 0.5, 5 }, cp[3], d2;
+  vtkIdType id;
+  int sub;
+  loc->FindClosestPoint(x, cp, id, sub, d2);
+  EXPECT_EQ(id, -1);
+  EXPECT_EQ(errors, 1);
 }
