@@ -12,6 +12,7 @@
 #include <vtkCamera.h>
 #include <vtkCoordinate.h>
 #include <vtkImageData.h>
+#include <vtkPlaneCollection.h>
 #include <vtkProperty.h>
 #include <vtkTextProperty.h>
 #include <vtkUnstructuredGrid.h>
@@ -178,6 +179,23 @@ void ViewerApp::Internals::SetupWindow()
   });
   Style->AddObserver(vtkCommand::StartInteractionEvent, StartInteractCb);
   Style->AddObserver(vtkCommand::EndInteractionEvent, EndInteractCb);
+
+  // The clipping plane: drawn faintly (it lies over the cut face); the left button on it pushes
+  // it along its normal, on the arrow turns it, on the centre point slides it.
+  ClipRep->SetPlaceFactor(1.0);
+  ClipRep->GetPlaneProperty()->SetOpacity(0.08);
+  ClipRep->GetSelectedPlaneProperty()->SetOpacity(0.15);
+  ClipRep->OutlineTranslationOff(); // dragging the box would move the plane's frame, not the data
+  ClipWidget->SetInteractor(Interactor);
+  ClipWidget->SetRepresentation(ClipRep);
+  ClipCb->SetClientData(this);
+  ClipCb->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+    auto* I = static_cast<Internals*>(self);
+    I->ClipRep->GetPlane(I->ClipPlane);
+  });
+  ClipWidget->AddObserver(vtkCommand::InteractionEvent, ClipCb);
+  ClipWidget->AddObserver(vtkCommand::StartInteractionEvent, StartInteractCb);
+  ClipWidget->AddObserver(vtkCommand::EndInteractionEvent, EndInteractCb);
 }
 
 void ViewerApp::Internals::ResetCamera()
@@ -218,6 +236,7 @@ void ViewerApp::Internals::ApplySettings()
     Mapper->AddIsoSurface(State.IsoValue, 1.0, 0.92, 0.82, 1.0);
   }
   EdgeActor->SetVisibility(State.Edges && State.Level >= 0);
+  ApplyClip();
   Help->SetInput(HelpText(State, IsTets()).c_str());
   Help->SetVisibility(State.Help);
   UpdateStatus();
@@ -241,5 +260,35 @@ void ViewerApp::Internals::UpdateStatus()
       Scene.LevelLabels[State.Level];
   }
   Status->SetInput(s.c_str());
+}
+
+void ViewerApp::Internals::ApplyClip()
+{
+  if (!State.Clip || !IsTets())
+  {
+    Mapper->RemoveAllClippingPlanes();
+    ClipWidget->Off();
+    return;
+  }
+  if (!ClipPlaced)
+  {
+    // First shown through the middle, facing the camera: the near half goes and the cut face
+    // looks at the viewer.
+    const art::Box3& b = Scene.Bounds;
+    double box[6] = { b.lo.x, b.hi.x, b.lo.y, b.hi.y, b.lo.z, b.hi.z };
+    ClipRep->PlaceWidget(box);
+    const art::Vec3 c = b.Center();
+    ClipRep->SetOrigin(c.x, c.y, c.z);
+    double d[3];
+    Ren->GetActiveCamera()->GetDirectionOfProjection(d);
+    ClipRep->SetNormal(d);
+    ClipPlaced = true;
+  }
+  ClipRep->GetPlane(ClipPlane);
+  if (!Mapper->GetClippingPlanes() || !Mapper->GetClippingPlanes()->IsItemPresent(ClipPlane))
+  {
+    Mapper->AddClippingPlane(ClipPlane);
+  }
+  ClipWidget->On();
 }
 } // namespace view

@@ -16,7 +16,10 @@
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkExtractEdges.h>
+#include <vtkImplicitPlaneRepresentation.h>
+#include <vtkImplicitPlaneWidget2.h>
 #include <vtkNew.h>
+#include <vtkPlane.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
@@ -61,6 +64,13 @@ struct ViewerApp::Internals
   vtkNew<vtkActor> EdgeActor;
   vtkNew<vtkTextActor> Help, Status, ProgressBar;
   vtkNew<vtkCallbackCommand> TimerCb, StartInteractCb, EndInteractCb;
+  // The `c` key's clipping plane: the widget's plane is copied into ClipPlane, which the mapper
+  // holds, at every move (the mapper cuts its rays, so dragging costs no rebuild).
+  vtkNew<vtkImplicitPlaneRepresentation> ClipRep;
+  vtkNew<vtkImplicitPlaneWidget2> ClipWidget;
+  vtkNew<vtkPlane> ClipPlane;
+  vtkNew<vtkCallbackCommand> ClipCb;
+  bool ClipPlaced = false;
   std::chrono::steady_clock::time_point T0 = std::chrono::steady_clock::now();
   bool Dirty = false, Quitting = false;
   int ExitCode = 0;
@@ -82,6 +92,7 @@ struct ViewerApp::Internals
   void StepScript();
   void ShowLevel(int i);
   void ApplySettings();
+  void ApplyClip();
   void UpdateStatus();
   void ResetCamera();
   bool Screenshot(const std::string& path);

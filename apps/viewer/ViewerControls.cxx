@@ -62,6 +62,9 @@ KeyResult ApplyKey(ViewerState& s, char key, int levels)
     case 'm':
       s.Edges = !s.Edges;
       return KeyResult::Changed;
+    case 'c':
+      s.Clip = !s.Clip;
+      return KeyResult::Changed;
     case 'h':
       s.Help = !s.Help;
       return KeyResult::Changed;
@@ -97,6 +100,7 @@ std::string HelpText(const ViewerState& s, bool volume)
        << "\n";
     os << "x        integrator: " << (s.Trapezoid ? "trapezoid" : "exact") << "\n";
     os << "m        mesh edges: " << (s.Edges ? "on" : "off") << "\n";
+    os << "c        clipping plane: " << (s.Clip ? "on (drag it)" : "off") << "\n";
   }
   os << "s        screenshot\n";
   os << "r        reset camera\n";

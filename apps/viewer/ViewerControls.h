@@ -20,6 +20,7 @@ struct ViewerState
   int ErtIndex = 0;         ///< into ErtSteps()
   bool Trapezoid = false;
   bool Edges = false;
+  bool Clip = false;        ///< a clipping plane widget cuts the volume
   bool Help = true;
 
   double Ert() const;

@@ -145,9 +145,12 @@ TEST(ViewerControls, SettingsKeys)
   EXPECT_TRUE(s.Trapezoid);
   EXPECT_EQ(ApplyKey(s, 'm', 1), KeyResult::Changed);
   EXPECT_TRUE(s.Edges);
+  EXPECT_EQ(ApplyKey(s, 'c', 1), KeyResult::Changed);
+  EXPECT_TRUE(s.Clip);
   const std::string help = HelpText(s, true);
   EXPECT_NE(help.find("integrator: trapezoid"), std::string::npos) << help;
   EXPECT_NE(help.find("mesh edges: on"), std::string::npos) << help;
+  EXPECT_NE(help.find("clipping plane: on"), std::string::npos) << help;
   EXPECT_NE(help.find("iso-surface: on at 110"), std::string::npos) << help;
   EXPECT_EQ(HelpText(s, false).find("iso"), std::string::npos); // a triangle scene has no tet controls
 
