@@ -40,43 +40,46 @@ ADAPTIVERTTETRAYCAST_EXPORT double Erfcx(double x);
 ADAPTIVERTTETRAYCAST_EXPORT void IntegrateLinearPiece(const double c0[3], const double c1[3],
   double tau0, double tau1, double length, double C[3], double& T);
 
-class ADAPTIVERTTETRAYCAST_EXPORT ExactIntegrator
+/// What both segment rules share: the transparency test inline (most segments of a typical
+/// transfer function end at it), the integration out of line in Rule::IntegrateSpan.
+template <class Rule>
+class SegmentRule
 {
 public:
-  explicit ExactIntegrator(const TransferFunction& tf) : TF(tf) {}
+  explicit SegmentRule(const TransferFunction& tf) : TF(tf) {}
   /// Composites the segment (scalar s0 -> s1 over `length` world units) behind `acc`.
-  /// Inline up to the transparency test, which most segments of a typical transfer function end at.
   void Integrate(double s0, double s1, double length, RayAccum& acc) const
   {
     if (length > 0.0 && !TF.Transparent(s0, s1))
     {
-      IntegrateSpan(s0, s1, length, acc);
+      static_cast<const Rule&>(*this).IntegrateSpan(s0, s1, length, acc);
     }
   }
 
-private:
-  void IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const;
-
+protected:
   const TransferFunction& TF;
 };
 
-class ADAPTIVERTTETRAYCAST_EXPORT TrapezoidRule
+/// Split at the transfer function's control points, each piece in closed form (IntegrateLinearPiece).
+class ADAPTIVERTTETRAYCAST_EXPORT ExactIntegrator : public SegmentRule<ExactIntegrator>
 {
 public:
-  explicit TrapezoidRule(const TransferFunction& tf) : TF(tf) {}
-  /// alpha = 1 - exp(-l (tau0 + tau1) / 2), colour (c0 + c1) / 2 premultiplied by alpha.
-  void Integrate(double s0, double s1, double length, RayAccum& acc) const
-  {
-    if (length > 0.0 && !TF.Transparent(s0, s1))
-    {
-      IntegrateSpan(s0, s1, length, acc);
-    }
-  }
+  using SegmentRule::SegmentRule;
 
 private:
+  friend class SegmentRule<ExactIntegrator>;
   void IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const;
+};
 
-  const TransferFunction& TF;
+/// The seed paper's rule: alpha = 1 - exp(-l (tau0 + tau1) / 2), colour (c0 + c1) / 2 premultiplied by alpha.
+class ADAPTIVERTTETRAYCAST_EXPORT TrapezoidRule : public SegmentRule<TrapezoidRule>
+{
+public:
+  using SegmentRule::SegmentRule;
+
+private:
+  friend class SegmentRule<TrapezoidRule>;
+  void IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const;
 };
 } // namespace art
 
