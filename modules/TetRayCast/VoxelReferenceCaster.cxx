@@ -71,19 +71,29 @@ VoxelReferenceCaster VoxelReferenceCaster::FromVTK(vtkImageData* image, Transfer
 
 void VoxelReferenceCaster::SetDirection(const double r[9])
 {
-  for (int i = 0; i < 3; ++i)
+  // The inverse by cofactors; a matrix whose columns are (nearly) dependent flattens the volume.
+  const double c[9] = { r[4] * r[8] - r[5] * r[7], r[2] * r[7] - r[1] * r[8], r[1] * r[5] - r[2] * r[4],
+    r[5] * r[6] - r[3] * r[8], r[0] * r[8] - r[2] * r[6], r[2] * r[3] - r[0] * r[5],
+    r[3] * r[7] - r[4] * r[6], r[1] * r[6] - r[0] * r[7], r[0] * r[4] - r[1] * r[3] };
+  const double det = r[0] * c[0] + r[1] * c[3] + r[2] * c[6];
+  double scale = 0;
+  for (int i = 0; i < 9; ++i)
   {
-    for (int j = 0; j < 3; ++j)
-    {
-      const double rr = r[i] * r[j] + r[3 + i] * r[3 + j] + r[6 + i] * r[6 + j]; // (R^T R)_ij
-      if (std::fabs(rr - (i == j ? 1.0 : 0.0)) > 1e-6)
-      {
-        throw Error("the volume's direction matrix is not a rotation");
-      }
-    }
+    scale = std::max(scale, std::fabs(r[i]));
   }
-  std::copy(r, r + 9, R);
-  Rotated = !(r[0] == 1 && r[4] == 1 && r[8] == 1);
+  if (!(std::fabs(det) > 1e-12 * scale * scale * scale))
+  {
+    throw Error("the volume's direction matrix is singular (its axes are not independent)");
+  }
+  for (int i = 0; i < 9; ++i)
+  {
+    Inv[i] = c[i] / det;
+  }
+  Turned = false;
+  for (int i = 0; i < 9; ++i)
+  {
+    Turned |= r[i] != (i % 4 == 0 ? 1.0 : 0.0);
+  }
 }
 
 double VoxelReferenceCaster::Sample(const Vec3& p) const
@@ -133,8 +143,10 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
     progress->Begin("reference", double(cam.Width()) * cam.Height()); // ForEachTile counts pixels
   }
   // A step from sa to sb with the iso crossings on it (half-open, as the tet caster counts them).
-  auto IntegrateWithIsos = [&](const Ray& r, double ta, double dt, double len, double sa, double sb,
-                             const ExactIntegrator& rule, RayAccum& acc) {
+  // r is in the volume's frame; `view` is the world ray's unit direction and len its length per
+  // unit of t (the frame may shear, so both are taken from the world ray).
+  auto IntegrateWithIsos = [&](const Ray& r, const Vec3& view, double ta, double dt, double len, double sa,
+                             double sb, const ExactIntegrator& rule, RayAccum& acc) {
     double fr[8];
     int fi[8], n = 0;
     for (std::size_t k = 0; k < Isos.size() && n < 8; ++k)
@@ -154,7 +166,6 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
         std::swap(fi[b], fi[b - 1]);
       }
     }
-    const Vec3 view = r.dir / len;
     double fa = 0.0, s0 = sa;
     for (int k = 0; k < n; ++k)
     {
@@ -162,7 +173,13 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
       rule.Integrate(s0, iso.value, (fr[k] - fa) * dt * len, acc);
       fa = fr[k];
       s0 = iso.value;
-      const Vec3 g = Gradient(r.At(ta + fa * dt));
+      // The world gradient is Inv^T times the frame's.
+      const Vec3 gl0 = Gradient(r.At(ta + fa * dt));
+      Vec3 g;
+      for (int a = 0; a < 3; ++a)
+      {
+        g[a] = Inv[a] * gl0.x + Inv[3 + a] * gl0.y + Inv[6 + a] * gl0.z;
+      }
       const double gl = Length(g);
       const double shade = Ambient + Diffuse * (gl > 0 ? std::fabs(Dot(g, view)) / gl : 1.0);
       for (int ch = 0; ch < 3; ++ch)
@@ -181,20 +198,23 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
         for (int x = tile.x0; x < tile.x1; ++x)
         {
           ++c.rays;
-          // Into the volume's own frame (a rotation about the origin: t and lengths unchanged).
           Ray r = cam.Generate(x, y);
           double c0 = r.tmin, c1 = r.tmax; // the planes' interval, in world coordinates
           if (!r.IsValid() || !ClipToPlanes(Planes, r, c0, c1))
           {
             continue;
           }
-          if (Rotated)
+          // Into the volume's own frame, an affine map that keeps t: world lengths (len) and the
+          // view come from the world ray, the sample spacing from the frame's (lenFrame).
+          const double len = Length(r.dir);
+          const Vec3 view = r.dir / len;
+          if (Turned)
           {
             const Vec3 q = r.org - O, d = r.dir;
             for (int a = 0; a < 3; ++a)
             {
-              r.org[a] = O[a] + R[a] * q.x + R[3 + a] * q.y + R[6 + a] * q.z;
-              r.dir[a] = R[a] * d.x + R[3 + a] * d.y + R[6 + a] * d.z;
+              r.org[a] = O[a] + Inv[3 * a] * q.x + Inv[3 * a + 1] * q.y + Inv[3 * a + 2] * q.z;
+              r.dir[a] = Inv[3 * a] * d.x + Inv[3 * a + 1] * d.y + Inv[3 * a + 2] * d.z;
             }
           }
           double t0, t1;
@@ -203,8 +223,8 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
             continue;
           }
           ++c.hits;
-          const double len = Length(r.dir);
-          const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) * len / step)));
+          const double lenFrame = Length(r.dir);
+          const int n = std::max(1, static_cast<int>(std::ceil((t1 - t0) * lenFrame / step)));
           const double dt = (t1 - t0) / n;
           RayAccum acc;
           double sa = Sample(r.At(t0)), smax = sa;
@@ -221,7 +241,7 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
             }
             else
             {
-              IntegrateWithIsos(r, t0 + (k - 1) * dt, dt, len, sa, sb, rule, acc);
+              IntegrateWithIsos(r, view, t0 + (k - 1) * dt, dt, len, sa, sb, rule, acc);
             }
             sa = sb;
           }

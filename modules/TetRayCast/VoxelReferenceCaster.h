@@ -26,10 +26,10 @@ public:
   /// Point-sampled volume: dims[0] x dims[1] x dims[2] values, x fastest.
   VoxelReferenceCaster(std::vector<double> values, const int dims[3], const Vec3& origin, const Vec3& spacing,
     TransferFunction tf);
-  /// Honours the image's direction matrix (which must be a rotation, possibly with reflection).
+  /// Honours the image's direction matrix (any invertible one: a rotation, a reflection, a shear).
   static VoxelReferenceCaster FromVTK(vtkImageData* image, TransferFunction tf, const std::string& file = {});
   /// Index axes in world coordinates: world = origin + R (i h0, j h1, k h2), R row-major and
-  /// orthonormal (throws art::Error otherwise). Identity by default.
+  /// invertible (throws art::Error otherwise). Identity by default.
   void SetDirection(const double r[9]);
 
   /// Samples per smallest voxel spacing (default 2).
@@ -59,8 +59,8 @@ private:
   std::vector<double> V;
   int D[3];
   Vec3 O, H;
-  double R[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  bool Rotated = false;
+  double Inv[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }; ///< the direction's inverse, row-major
+  bool Turned = false;                           ///< the direction is not the identity
   Box3 Box;
   TransferFunction TF;
   double PerVoxel = 2;
