@@ -48,7 +48,8 @@ double Seconds(std::chrono::steady_clock::time_point t0)
 
 void Declare(cli::Options& o)
 {
-  o.Add("array", 0, "NAME", "point (or cell) array to render (default: the active scalars)");
+  o.Add("array", 0, "NAME", "point (or cell) array to render (default: the active scalars); NAME:magnitude or "
+    "NAME:N for a vector's magnitude or component N");
   o.Add("tf", 0, "NAME|FILE",
     "transfer function: a preset (auto = ct-skin-bone on CT in Hounsfield units, else grey-ramp; ct-skin-bone, "
     "ct-bone, grey-ramp, constant) or a file of 'scalar r g b opacity' lines, or a ParaView preset exported as .json",
@@ -282,7 +283,8 @@ int Run(const cli::Options& o, const std::string& input)
   else
   {
     auto grid = art::LoadMesh(input);
-    mesh = art::TetMesh::FromVTK(grid, o.Get("array"), &note, input);
+    const std::string array = art::AddComponentArray(grid, o.Get("array"), input); // NAME:magnitude, NAME:N
+    mesh = art::TetMesh::FromVTK(grid, array, &note, input);
     meshLabel = "tet mesh";
     range[0] = mesh.ScalarRange(0), range[1] = mesh.ScalarRange(1);
     settings = MakeSettings(o, MakeTF(o, grid, range[0], range[1]));

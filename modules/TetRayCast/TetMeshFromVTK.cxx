@@ -257,7 +257,7 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     if (cs->GetNumberOfComponents() != 1)
     {
       throw Error("cell array '" + std::string(cs->GetName()) + "' has " + std::to_string(cs->GetNumberOfComponents()) +
-          " components; rendering needs one (pick another with --array)",
+          " components; rendering needs one (choose with --array " + ComponentHint(cs) + ", or another array)",
         file);
     }
     vtkNew<vtkCellDataToPointData> toPoints;
@@ -273,7 +273,8 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
   if (s->GetNumberOfComponents() != 1)
   {
     throw Error("point array '" + std::string(s->GetName() ? s->GetName() : "") + "' has " +
-        std::to_string(s->GetNumberOfComponents()) + " components; rendering needs one (pick another with --array)",
+        std::to_string(s->GetNumberOfComponents()) + " components; rendering needs one (choose with --array " +
+        ComponentHint(s) + ", or another array)",
       file);
   }
   bool allTets = true;
