@@ -14,6 +14,7 @@ run render "$head" --reference -o $out/ct-head-reference.png --size 320x320 --zo
 run render "$head" --tets 150000 -o $out/ct-head-150k-tets.png --size 320x320 --zoom 1.4 --azimuth 25 --elevation 10 --no-error
 run render "$head" --tets 150000 --iso 300 --tf ct-bone -o $out/ct-head-iso.png --size 320x320 --zoom 1.4 --azimuth 25 --elevation 10 --no-error
 run render "$head" --tets 150000 --mip --tf $out/mip.tf -o $out/ct-head-mip.png --size 320x320 --zoom 1.4 --azimuth 25 --elevation 10 --no-error
+run render "$head" --tets 150000 --clip 122,122,80,-1,0,0 -o $out/ct-head-cutaway.png --size 320x320 --zoom 1.4 --azimuth -65 --elevation 10 --no-error
 run render data/am_underworks.ply -o $out/underworks.png --size 400x300 \
   --camera-position 640,640,-545 --focal-point 1500,640,-600 --view-angle 70
 run render data/am_underworks.ply -o $out/underworks-transparent.png --size 400x300 --opacity 0.5 \
