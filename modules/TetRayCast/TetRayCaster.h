@@ -64,8 +64,13 @@ struct RenderSettings
   /// Clipping planes (a, b, c, d) in the mesh's coordinates: only where a x + b y + c z + d >= 0
   /// is drawn (the side the normal points to, as VTK's mappers keep). Each ray's interval is cut,
   /// so moving a plane costs nothing; the image is that of the mesh cut by the planes (the field
-  /// is linear in each tet), but the clipped-away tets in front are still walked.
+  /// is linear in each tet).
   std::vector<std::array<double, 4>> clipPlanes;
+  /// Also leave the tets wholly on a plane's clipped side out of the walk (with skipEmpty): rays
+  /// then enter at the cut instead of walking the clipped part, for the cost of rebuilding the
+  /// walked region whenever the planes change (~35 ns per tet). A mapper turns it off while a
+  /// plane moves. The image is the same either way.
+  bool cullClipped = true;
 };
 
 /// Cuts [t0, t1] of ray r to where every plane (a, b, c, d) has a x + b y + c z + d >= 0.

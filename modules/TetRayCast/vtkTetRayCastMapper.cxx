@@ -148,6 +148,7 @@ struct vtkTetRayCastMapper::Internals
   vtkDataSet* MeshInput = nullptr;
   std::string MeshArray;
   std::vector<art::IsoSurface> Isos;
+  std::vector<std::array<double, 4>> LastPlanes; ///< the last frame's clipping planes (engine coordinates)
   vtkSmartPointer<vtkImageData> Last = vtkSmartPointer<vtkImageData>::New();
   std::vector<unsigned char> Bytes;
   vtkSmartPointer<vtkRayCastImageDisplayHelper> Helper;
@@ -320,6 +321,10 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                                                       : art::RenderSettings::Mode::Composite;
   s.isos = this->Impl->Isos;
   s.clipPlanes = art::mapper::PlanesInData(this->ClippingPlanes, engineToWorld);
+  // While a plane moves, each frame only cuts its rays; once it stands still, the tets it cuts
+  // away also leave the walked region (a rebuild per change, worth it only for planes that stay).
+  s.cullClipped = s.clipPlanes == this->Impl->LastPlanes;
+  this->Impl->LastPlanes = s.clipPlanes;
 
   const double allocated = vol->GetAllocatedRenderTime();
   if (this->AutoAdjustSampleDistances && this->LastFrameSeconds > 0 && allocated > 0)

@@ -222,6 +222,24 @@ TEST(TetRayCast, ClippingPlanesCutEachRay)
   ref.SetClipPlanes(s.clipPlanes);
   ref.Render(outside, img);
   EXPECT_EQ(ExpectClosedForm(m, img, outside, LinearLo, LinearHi, nullptr, s.clipPlanes), kept);
+  // The tets wholly clipped away leave the walk (cullClipped, the default): the same image, from
+  // fewer tets than walking them without integrating, seen from the clipped side.
+  {
+    const TetMesh fine = fixtures::GridMesh(12, 12, 12, { 0, 0, 0 }, { 1.0 / 12, 1.0 / 12, 1.0 / 12 }, Linear, 6);
+    RenderSettings cut = s, walkAll = s;
+    cut.clipPlanes = walkAll.clipPlanes = { { 1, 0.1, 0.2, -0.53 } };
+    walkAll.cullClipped = false;
+    const Camera side = ViewOf(fine.Bounds(), 48, 40, 270, 10);
+    Image culled, walked;
+    const RenderStats a = TetRayCaster(fine, cut).Render(side, culled);
+    const RenderStats b = TetRayCaster(fine, walkAll).Render(side, walked);
+    EXPECT_LT(a.counters.tetsCrossed, b.counters.tetsCrossed * 3 / 4);
+    double worst = 0;
+    for (std::size_t i = 0; i < culled.Pixels().size(); ++i)
+      worst = std::max(worst, double(std::fabs(culled.Pixels()[i] - walked.Pixels()[i])));
+    EXPECT_LT(worst, 1e-6);
+    EXPECT_GT(ExpectClosedForm(fine, culled, side, LinearLo, LinearHi, nullptr, cut.clipPlanes), 200);
+  }
   vtkNew<vtkCamera> vc;
   vc->SetPosition(0.37, 0.41, 0.53);
   vc->SetFocalPoint(0.9, 0.8, 0.7);
