@@ -201,6 +201,84 @@ std::size_t MergeDuplicatePoints(std::vector<Vec3>& pts, std::vector<double>& va
   KeepPoints(pts, val, tets, to); // the first of each group
   return merged;
 }
+
+// Flat tets (four points in one plane, to within rounding against the tet's own longest edge)
+// with a face that more than two tets share are left out: a clip through grid points
+// (vtkTableBasedClipDataSet, ParaView's Clip) leaves stacks of such pieces on its plane, and the
+// walk refused the mesh ('a face of tet 0 is shared by 5 tets'). Other flat tets stay: in a
+// Delaunay mesh of lattice points one links the two tets beside it. Returns how many went.
+std::size_t DropFlatTets(const std::vector<Vec3>& pts, std::vector<std::array<int, 4>>& tets)
+{
+  auto flat = [&](const std::array<int, 4>& t) {
+    for (int v : t)
+    {
+      if (v < 0 || static_cast<std::size_t>(v) >= pts.size() || !IsFinite(pts[v]))
+      {
+        return false; // the constructor names it
+      }
+    }
+    const Vec3 a = pts[t[1]] - pts[t[0]], b = pts[t[2]] - pts[t[0]], c = pts[t[3]] - pts[t[0]];
+    const double edge =
+      std::sqrt(std::max({ Dot(a, a), Dot(b, b), Dot(c, c), Dot(b - a, b - a), Dot(c - a, c - a), Dot(c - b, c - b) }));
+    return std::fabs(Dot(a, Cross(b, c))) <= 1e-10 * edge * edge * edge;
+  };
+  using Face = std::array<int, 3>;
+  auto faceOf = [](const std::array<int, 4>& t, int k) {
+    Face f{ t[(k + 1) % 4], t[(k + 2) % 4], t[(k + 3) % 4] };
+    std::sort(f.begin(), f.end());
+    return f;
+  };
+  // Only the flat tets' faces are counted: a mesh without flat tets costs one pass.
+  std::vector<Face> faces;
+  for (const auto& t : tets)
+  {
+    if (flat(t))
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        faces.push_back(faceOf(t, k));
+      }
+    }
+  }
+  if (faces.empty())
+  {
+    return 0;
+  }
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  std::vector<int> count(faces.size(), 0);
+  auto find = [&](const Face& f) { return std::lower_bound(faces.begin(), faces.end(), f); };
+  for (const auto& t : tets)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      const Face f = faceOf(t, k);
+      const auto it = find(f);
+      if (it != faces.end() && *it == f)
+      {
+        ++count[it - faces.begin()];
+      }
+    }
+  }
+  const std::size_t before = tets.size();
+  tets.erase(std::remove_if(tets.begin(), tets.end(),
+               [&](const std::array<int, 4>& t) {
+                 if (!flat(t))
+                 {
+                   return false;
+                 }
+                 for (int k = 0; k < 4; ++k)
+                 {
+                   if (count[find(faceOf(t, k)) - faces.begin()] > 2)
+                   {
+                     return true;
+                   }
+                 }
+                 return false;
+               }),
+    tets.end());
+  return before - tets.size();
+}
 } // namespace
 
 TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, std::string* note, const std::string& file)
@@ -329,12 +407,24 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     tets.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]),
       static_cast<int>(ids[3]) });
   }
-  const std::size_t unused = DropUnusedPoints(pts, val, tets);
+  std::size_t unused = DropUnusedPoints(pts, val, tets);
+  const std::size_t merged = MergeDuplicatePoints(pts, val, tets);
+  // After the merge: a clip's points on its plane repeat the grid's, and only merged do the
+  // flat pieces' faces show as shared.
+  const std::size_t flat = DropFlatTets(pts, tets);
+  if (flat > 0)
+  {
+    unused += DropUnusedPoints(pts, val, tets);
+  }
+  if (flat > 0 && note)
+  {
+    *note += std::string(note->empty() ? "" : "; ") + std::to_string(flat) +
+      " flat tets (no volume, as a clip through grid points leaves) were left out";
+  }
   if (unused > 0 && note)
   {
     *note += std::string(note->empty() ? "" : "; ") + std::to_string(unused) + " points no tet uses were dropped";
   }
-  const std::size_t merged = MergeDuplicatePoints(pts, val, tets);
   if (merged > 0 && note)
   {
     *note += std::string(note->empty() ? "" : "; ") + std::to_string(merged) +
