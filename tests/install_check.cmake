@@ -22,4 +22,22 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E env "PYTHONPATH=${PREFIX}/${PYDIR}"
 if(rc OR NOT out MATCHES "vtkImageMetrics")
   message(FATAL_ERROR "import adaptivert from the install failed: ${out}${err}")
 endif()
-message(STATUS "installed tool and Python package work")
+# A downstream CMake project finds the installed modules with only the prefix, links them, and
+# reduces the CT head (there was no AdaptiveRTConfig.cmake: find_package(AdaptiveRT) failed).
+set(_down "${PREFIX}/downstream-build")
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE}/tests/downstream" -B "${_down}" -G "${GENERATOR}"
+  "-DCMAKE_PREFIX_PATH=${PREFIX}" -DCMAKE_BUILD_TYPE=Release
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "a downstream project cannot find_package(AdaptiveRT) from the install: ${out}${err}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build "${_down}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc)
+  message(FATAL_ERROR "a downstream project does not build against the install: ${out}${err}")
+endif()
+execute_process(COMMAND "${_down}/downstream" "${SOURCE}/data/ct-head-128.mha"
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc OR NOT out MATCHES "reduced to [0-9]+ tets")
+  message(FATAL_ERROR "the downstream program failed: ${out}${err}")
+endif()
+message(STATUS "installed tool and Python package work; a downstream project ${out}")
