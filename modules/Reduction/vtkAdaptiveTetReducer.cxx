@@ -136,8 +136,15 @@ int vtkAdaptiveTetReducer::RequestData(
       opt.Levels.push_back(l);
     }
   }
-  // Progress is reported from the driver loop (this thread), never from worker threads.
-  art::Progress progress([this](double f, const std::string&) { this->UpdateProgress(f); });
+  // Progress is reported from the driver loop (this thread), never from worker threads. An
+  // observer's SetAbortExecute(1) cancels the reduction at the next level, as VTK's filters stop.
+  art::Progress progress([this, &progress](double f, const std::string&) {
+    this->UpdateProgress(f);
+    if (this->GetAbortExecute())
+    {
+      progress.Cancel();
+    }
+  });
   try
   {
     // The array chosen with SetInputArrayToProcess (default: the point scalars).
@@ -228,6 +235,13 @@ int vtkAdaptiveTetReducer::RequestData(
   }
   catch (const art::Error& e)
   {
+    if (progress.Cancelled())
+    {
+      // Aborted: empty outputs, no error (a previous run's mesh must not pass for this one's).
+      output->Initialize();
+      levels->Initialize();
+      return 1;
+    }
     vtkErrorMacro(<< e.what());
     return 0;
   }
