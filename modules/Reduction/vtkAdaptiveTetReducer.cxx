@@ -23,6 +23,8 @@
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <limits>
+
 vtkStandardNewMacro(vtkAdaptiveTetReducer);
 
 vtkAdaptiveTetReducer::vtkAdaptiveTetReducer()
@@ -97,6 +99,9 @@ int vtkAdaptiveTetReducer::RequestData(
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   vtkMultiBlockDataSet* levels = vtkMultiBlockDataSet::GetData(outputVector, 1);
+  // A run that fails or is aborted leaves no figures of an earlier one behind.
+  this->RMSError = this->MaxError = this->BuildSeconds = std::numeric_limits<double>::quiet_NaN();
+  this->WeightedRMSError = this->WeightedMaxError = std::numeric_limits<double>::quiet_NaN();
   if (this->TargetTets <= 0 && this->TargetError < 0)
   {
     vtkErrorMacro("Set TargetTets or TargetError.");

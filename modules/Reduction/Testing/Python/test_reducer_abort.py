@@ -1,7 +1,9 @@
 """vtkAdaptiveTetReducer stops when a progress observer calls SetAbortExecute(1), as VTK's filters
 do: both outputs come back empty, with no error, and a later run with the abort cleared reduces
-again. The abort was ignored: the reduction ran on to its full budget.
+again. The abort was ignored: the reduction ran on to its full budget. An aborted run after a
+finished one leaves no figures of it behind (GetRMSError gave the earlier run's).
 """
+import math
 import os
 import time
 
@@ -44,4 +46,13 @@ tets = reducer.GetOutput().GetNumberOfCells()
 print(f"run again: {tets} tets, {reducer.GetOutputDataObject(1).GetNumberOfBlocks()} levels")
 assert 20000 <= tets < 20100, tets
 assert reducer.GetOutputDataObject(1).GetNumberOfBlocks() == 2
+assert reducer.GetRMSError() > 0, reducer.GetRMSError()
+
+seen.clear()
+reducer.AddObserver(vtkCommand.ProgressEvent, abort_early)
+reducer.SetTargetTets(30000)
+reducer.Update()
+print(f"aborted again: {reducer.GetOutput().GetNumberOfCells()} tets, RMS {reducer.GetRMSError()}")
+assert reducer.GetOutput().GetNumberOfCells() == 0
+assert math.isnan(reducer.GetRMSError()) and math.isnan(reducer.GetMaxError()), reducer.GetRMSError()
 print("ok")
