@@ -203,7 +203,8 @@ struct TetRayCaster::Impl
     }
     if (mip)
     {
-      if (res.pieces > 0)
+      // A piece that lay wholly before the ray's origin (`from`) saw no scalar.
+      if (res.pieces > 0 && res.maxScalar > -1e300)
       {
         double rgb[3], tau;
         S.tf.Evaluate(res.maxScalar, rgb, tau);

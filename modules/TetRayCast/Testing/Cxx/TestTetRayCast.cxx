@@ -391,6 +391,40 @@ TEST(TetRayCast, MaximumIntensity)
   EXPECT_NEAR(res.maxScalar, Linear({ 3, 1.5, 1.2 }), 1e-12);
 }
 
+// A parallel camera's rays from the notch of an L-shape (inside the mesh's box, outside the mesh),
+// looking out of it: their lines meet the mesh only behind their origins, so every pixel keeps
+// the background, in maximum intensity as in composite (MIP drew the transfer function's lowest
+// colour there: its ray counted a piece with nothing after the origin).
+TEST(TetRayCast, RaysWithTheMeshOnlyBehindThemMissIt)
+{
+  const TetMesh L = fixtures::GridMesh(4, 4, 2, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Linear, 6,
+    [](int i, int j, int) { return !(i >= 2 && j >= 2); });
+  vtkNew<vtkCamera> vc;
+  vc->SetPosition(1.5, 1.5, 0.5);
+  vc->SetFocalPoint(2.5, 2.5, 0.5);
+  vc->SetViewUp(0, 0, 1);
+  vc->SetParallelProjection(true);
+  vc->SetParallelScale(0.2);
+  const Camera cam = Camera::FromVTK(vc, 16, 16);
+  for (auto mode : { RenderSettings::Mode::MaxIntensity, RenderSettings::Mode::Composite })
+  {
+    RenderSettings s;
+    s.tf = LinearTF(-0.2, 0.9);
+    s.mode = mode;
+    Image img;
+    TetRayCaster(L, s).Render(cam, img);
+    for (float v : img.Pixels())
+      ASSERT_EQ(v, 0.0f) << "mode " << int(mode);
+    vc->SetFocalPoint(0.5, 0.5, 0.5); // turned round, the same rays meet the mesh in front
+    TetRayCaster(L, s).Render(Camera::FromVTK(vc, 16, 16), img);
+    vc->SetFocalPoint(2.5, 2.5, 0.5);
+    double alpha = 0;
+    for (int i = 3; i < static_cast<int>(img.Pixels().size()); i += 4)
+      alpha += img.Pixels()[i];
+    EXPECT_GT(alpha, 16 * 16 * 0.1) << "mode " << int(mode);
+  }
+}
+
 TEST(TetMesh, FromImageSaysWhatIsMissing)
 {
   // A 10 x 10 x 1 image has scalars but no cells: the message says that, not "needs scalars".
