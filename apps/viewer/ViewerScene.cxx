@@ -52,6 +52,7 @@ void ViewerScene::AddLevel(vtkSmartPointer<vtkUnstructuredGrid> grid, long long 
 ViewerScene LoadScene(const std::string& file, const std::string& tf, const std::string& array)
 {
   ViewerScene s;
+  double points = -1; // a mesh's distinct points, for a preset's unit distance
   const art::DataKind kind = art::KindOf(file);
   vtkSmartPointer<vtkDataObject> data =
     kind == art::DataKind::Volume ? vtkSmartPointer<vtkDataObject>(art::LoadVolume(file, array)) : art::Load(file);
@@ -96,11 +97,12 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const std:
     s.Bounds = mesh.Bounds();
     s.AddLevel(grid, static_cast<long long>(mesh.NumberOfTets()), -1);
     s.Note = note;
+    points = static_cast<double>(mesh.NumberOfPoints()); // duplicates merged
   }
   // A preset's unit distance follows the data (1 mm on CT in HU, else its sample spacing), as in render.
   s.Transfer = tf.find_first_of("./") != std::string::npos
     ? art::TransferFunction::FromFile(tf)
-    : art::TransferFunction::PresetFor(tf, vtkDataSet::SafeDownCast(data), s.Range[0], s.Range[1]);
+    : art::TransferFunction::PresetFor(tf, vtkDataSet::SafeDownCast(data), s.Range[0], s.Range[1], points);
   return s;
 }
 } // namespace view

@@ -217,7 +217,7 @@ double TransferFunction::PresetUnitDistance(double lo, double hi, double h)
   return LooksLikeHU(lo, hi) || !(h > 0.0) || !std::isfinite(h) ? 1.0 : h;
 }
 
-double TransferFunction::SampleSpacing(vtkDataSet* data)
+double TransferFunction::SampleSpacing(vtkDataSet* data, double points)
 {
   if (auto* image = vtkImageData::SafeDownCast(data))
   {
@@ -234,12 +234,13 @@ double TransferFunction::SampleSpacing(vtkDataSet* data)
   double b[6];
   data->GetBounds(b);
   const double extent[3] = { b[1] - b[0], b[3] - b[2], b[5] - b[4] };
-  return MeanSpacing(extent, static_cast<double>(data->GetNumberOfPoints()));
+  return MeanSpacing(extent, points > 0 ? points : static_cast<double>(data->GetNumberOfPoints()));
 }
 
-TransferFunction TransferFunction::PresetFor(const std::string& name, vtkDataSet* data, double lo, double hi)
+TransferFunction TransferFunction::PresetFor(const std::string& name, vtkDataSet* data, double lo, double hi,
+  double points)
 {
-  return Preset(name, lo, hi, PresetUnitDistance(lo, hi, SampleSpacing(data)));
+  return Preset(name, lo, hi, PresetUnitDistance(lo, hi, SampleSpacing(data, points)));
 }
 
 TransferFunction TransferFunction::Preset(const std::string& name, double lo, double hi, double unitDistance)

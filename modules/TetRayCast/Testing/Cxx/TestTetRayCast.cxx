@@ -571,6 +571,11 @@ TEST(TetMesh, DuplicatePointsAreMerged)
     std::string::npos) << note;
   EXPECT_EQ(m.PointsArray().size(), shared.PointsArray().size());
   EXPECT_EQ(m.BoundaryFaces().size(), shared.BoundaryFaces().size());
+  // A preset's unit distance counts the merged points, as for the mesh with shared points.
+  const double spacing = std::cbrt(3.0 * 2.0 * 2.0 / double(shared.PointsArray().size()));
+  EXPECT_NEAR(TransferFunction::SampleSpacing(ug, double(m.NumberOfPoints())), spacing, 1e-12);
+  EXPECT_NEAR(TransferFunction::SampleSpacing(ug), std::cbrt(12.0 / double(4 * shared.NumberOfTets())), 1e-12)
+    << "without the count, every cell's own points";
   EXPECT_TRUE(m.IsConvex());
   RenderSettings s;
   s.tf = LinearTF(shared.ScalarRange(0), shared.ScalarRange(1));
