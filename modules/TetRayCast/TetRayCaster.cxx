@@ -491,7 +491,7 @@ void TetRayCaster::BuildRegion()
     return;
   }
   // The region's links and boundary faces, in parallel chunks whose faces join in chunk order
-  // (the same list for any thread count). A plane moved in a mapper rebuilds this every frame.
+  // (the same list for any thread count).
   Shown.links.resize(n);
   constexpr long long grain = 16384;
   const long long chunks = (static_cast<long long>(n) + grain - 1) / grain;
