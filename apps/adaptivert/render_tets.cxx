@@ -327,11 +327,7 @@ int Run(const cli::Options& o, const std::string& input)
     {
       throw art::Error("--reference needs a voxel volume", input);
     }
-    auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf, input);
-    rc.SetMaxIntensity(settings.mode == art::RenderSettings::Mode::MaxIntensity);
-    rc.SetIsoSurfaces(settings.isos, settings.ambient, settings.diffuse);
-    rc.SetClipPlanes(settings.clipPlanes);
-    st = rc.Render(cam, img, &progress);
+    st = art::VoxelReferenceCaster::FromVTK(volume, settings, input).Render(cam, img, &progress);
   }
   else
   {
@@ -341,11 +337,7 @@ int Run(const cli::Options& o, const std::string& input)
     {
       if (volume)
       {
-        auto rc = art::VoxelReferenceCaster::FromVTK(volume, settings.tf, input);
-        rc.SetMaxIntensity(settings.mode == art::RenderSettings::Mode::MaxIntensity);
-        rc.SetIsoSurfaces(settings.isos, settings.ambient, settings.diffuse);
-        rc.SetClipPlanes(settings.clipPlanes);
-        rst = rc.Render(cam, ref, &progress);
+        rst = art::VoxelReferenceCaster::FromVTK(volume, settings, input).Render(cam, ref, &progress);
         haveRef = true;
       }
       else if (settings.mode == art::RenderSettings::Mode::Composite &&

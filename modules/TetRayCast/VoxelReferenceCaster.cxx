@@ -69,6 +69,15 @@ VoxelReferenceCaster VoxelReferenceCaster::FromVTK(vtkImageData* image, Transfer
   }
 }
 
+VoxelReferenceCaster VoxelReferenceCaster::FromVTK(vtkImageData* image, const RenderSettings& s, const std::string& file)
+{
+  VoxelReferenceCaster rc = FromVTK(image, s.tf, file);
+  rc.SetMaxIntensity(s.mode == RenderSettings::Mode::MaxIntensity);
+  rc.SetIsoSurfaces(s.isos, s.ambient, s.diffuse);
+  rc.SetClipPlanes(s.clipPlanes);
+  return rc;
+}
+
 void VoxelReferenceCaster::SetDirection(const double r[9])
 {
   // The inverse by cofactors; a matrix whose columns are (nearly) dependent flattens the volume.

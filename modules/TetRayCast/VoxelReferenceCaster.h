@@ -28,6 +28,9 @@ public:
     TransferFunction tf);
   /// Honours the image's direction matrix (any invertible one: a rotation, a reflection, a shear).
   static VoxelReferenceCaster FromVTK(vtkImageData* image, TransferFunction tf, const std::string& file = {});
+  /// The reference for what the tet caster draws with settings s: its transfer function, mode,
+  /// iso-surfaces and clipping planes.
+  static VoxelReferenceCaster FromVTK(vtkImageData* image, const RenderSettings& s, const std::string& file = {});
   /// Index axes in world coordinates: world = origin + R (i h0, j h1, k h2), R row-major and
   /// invertible (throws art::Error otherwise). Identity by default.
   void SetDirection(const double r[9]);
