@@ -279,6 +279,17 @@ std::size_t DropFlatTets(const std::vector<Vec3>& pts, std::vector<std::array<in
     tets.end());
   return before - tets.size();
 }
+// A vector (or other multi-component) array is one error naming how to choose a component.
+void CheckOneComponent(vtkDataArray* a, const char* kind, const std::string& file)
+{
+  if (a->GetNumberOfComponents() != 1)
+  {
+    throw Error(std::string(kind) + " array '" + (a->GetName() ? a->GetName() : "") + "' has " +
+        std::to_string(a->GetNumberOfComponents()) + " components; rendering needs one (choose with --array " +
+        ComponentHint(a) + ", or another array)",
+      file);
+  }
+}
 } // namespace
 
 TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, std::string* note, const std::string& file)
@@ -332,12 +343,7 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
             ArrayNames({ ug->GetPointData(), cd }) + ")",
         file);
     }
-    if (cs->GetNumberOfComponents() != 1)
-    {
-      throw Error("cell array '" + std::string(cs->GetName()) + "' has " + std::to_string(cs->GetNumberOfComponents()) +
-          " components; rendering needs one (choose with --array " + ComponentHint(cs) + ", or another array)",
-        file);
-    }
+    CheckOneComponent(cs, "cell", file);
     vtkNew<vtkCellDataToPointData> toPoints;
     toPoints->SetInputData(ug);
     toPoints->ProcessAllArraysOff();
@@ -348,13 +354,7 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     s = ug->GetPointData()->GetArray(name.c_str());
     notes += (notes.empty() ? "" : "; ") + ("cell scalars '" + name + "' were averaged to the points");
   }
-  if (s->GetNumberOfComponents() != 1)
-  {
-    throw Error("point array '" + std::string(s->GetName() ? s->GetName() : "") + "' has " +
-        std::to_string(s->GetNumberOfComponents()) + " components; rendering needs one (choose with --array " +
-        ComponentHint(s) + ", or another array)",
-      file);
-  }
+  CheckOneComponent(s, "point", file);
   bool allTets = true;
   for (vtkIdType c = 0; c < ug->GetNumberOfCells() && allTets; ++c)
   {
