@@ -355,12 +355,26 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     notes += (notes.empty() ? "" : "; ") + ("cell scalars '" + name + "' were averaged to the points");
   }
   CheckOneComponent(s, "point", file);
-  bool allTets = true;
-  for (vtkIdType c = 0; c < ug->GetNumberOfCells() && allTets; ++c)
+  // Only 3-D cells other than tets need tetrahedralising; lower cells beside tets (ParaView's
+  // output often has some) are skipped below, not worth a pass of the triangle filter over every tet.
+  vtkIdType solids = 0, tetCells = 0;
   {
-    allTets = ug->GetCellType(c) == VTK_TETRA;
+    vtkNew<vtkGenericCell> cell;
+    int dimension[256];
+    std::fill(dimension, dimension + 256, -1);
+    for (vtkIdType c = 0; c < ug->GetNumberOfCells(); ++c)
+    {
+      const unsigned char type = ug->GetCellType(c);
+      if (dimension[type] < 0)
+      {
+        cell->SetCellType(type);
+        dimension[type] = cell->GetCellDimension();
+      }
+      tetCells += type == VTK_TETRA ? 1 : 0;
+      solids += dimension[type] == 3 ? 1 : 0;
+    }
   }
-  if (!allTets)
+  if (tetCells < solids)
   {
     // The chosen array rides through as the active scalars.
     auto withScalars = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -371,7 +385,7 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     tri->TetrahedraOnlyOn();
     tri->Update();
     ug = tri->GetOutput();
-    notes = "non-tetrahedral cells were tetrahedralised (" + std::to_string(grid->GetNumberOfCells()) + " cells -> " +
+    notes = "non-tetrahedral cells were tetrahedralised (" + std::to_string(solids) + " 3-D cells -> " +
       std::to_string(ug->GetNumberOfCells()) + " tets)" + (notes.empty() ? "" : "; " + notes);
     if (ug->GetNumberOfCells() == 0)
     {
