@@ -29,6 +29,21 @@ ViewerApp::ViewerApp(ViewerOptions options)
 {
   Impl->Opt = std::move(options);
   Impl->Scene = LoadScene(Impl->Opt.File, Impl->Opt.TransferFunction, Impl->Opt.Array);
+  if (!Impl->Scene.Surface && !Impl->Scene.Image && !Impl->Scene.Note.empty())
+  {
+    Impl->Say(Impl->Scene.Note); // a mesh's: cells tetrahedralised or left out, points dropped or merged
+  }
+  Impl->MapperMessageCb->SetClientData(Impl.get());
+  Impl->MapperMessageCb->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
+    // VTK's text: "Warning: In FILE, line N\nvtkTetRayCastMapper (0x..): what\n\n"; keep "what".
+    std::string text = data ? static_cast<const char*>(data) : "";
+    const std::size_t at = text.find("): ");
+    text = at == std::string::npos ? text : text.substr(at + 3);
+    text.erase(text.find_last_not_of(" \n") + 1);
+    static_cast<Internals*>(self)->Say(text);
+  });
+  Impl->Mapper->AddObserver(vtkCommand::WarningEvent, Impl->MapperMessageCb);
+  Impl->Mapper->AddObserver(vtkCommand::ErrorEvent, Impl->MapperMessageCb);
   if (!Impl->Scene.ArrayName.empty())
   {
     // The mapper picks the same array by name from every level's grid: a mesh's cell array among
@@ -54,6 +69,14 @@ ViewerApp::ViewerApp(ViewerOptions options)
 }
 
 ViewerApp::~ViewerApp() = default;
+
+void ViewerApp::Internals::Say(const std::string& what)
+{
+  if (!what.empty() && Said.insert(what).second)
+  {
+    std::fprintf(stderr, "adaptivert-view: %s: %s\n", Opt.File.c_str(), what.c_str());
+  }
+}
 
 int ViewerApp::Run()
 {

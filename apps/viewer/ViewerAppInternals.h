@@ -30,6 +30,7 @@
 
 #include <chrono>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,11 @@ struct ViewerApp::Internals
   vtkNew<vtkActor> EdgeActor;
   vtkNew<vtkTextActor> Help, Status, ProgressBar;
   vtkNew<vtkCallbackCommand> TimerCb, StartInteractCb, EndInteractCb;
+  // The mapper's warnings and errors as one line each, once ("adaptivert-view: FILE: what"),
+  // instead of VTK's log lines; the mesh's note is said at load, so the mapper's copy is not.
+  vtkNew<vtkCallbackCommand> MapperMessageCb;
+  std::set<std::string> Said;
+  void Say(const std::string& what);
   // The `c` key's clipping plane: the widget's plane is copied into ClipPlane, which the mapper
   // holds, at every move (the mapper cuts its rays, so dragging costs no rebuild).
   vtkNew<vtkImplicitPlaneRepresentation> ClipRep;
