@@ -93,6 +93,9 @@ public:
   const std::array<int, 3>& BoundaryAdjacency(std::size_t b) const { return BoundaryAdj[b]; }
 
   const Box3& Bounds() const { return Box; }
+  /// The range of the data the scalars stand for (presets and notes map onto it): the scalars'
+  /// own, or for a reducer's output (field data scalar_range_min/max) its volume's, which the
+  /// least-squares overshoot widens (a uint16 volume's mesh reached -2132 and looked like CT).
   double ScalarRange(int i) const { return Range[i]; }
   /// False for a mesh with holes, cavities, several pieces or a concave boundary.
   bool IsConvex() const { return Convex; }

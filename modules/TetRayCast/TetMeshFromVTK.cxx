@@ -13,6 +13,7 @@
 #include <vtkCellTypes.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetTriangleFilter.h>
+#include <vtkFieldData.h>
 #include <vtkGenericCell.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -279,6 +280,27 @@ std::size_t DropFlatTets(const std::vector<Vec3>& pts, std::vector<std::array<in
     tets.end());
   return before - tets.size();
 }
+// The range of the volume a reducer's output approximates (its field data scalar_range_min/max),
+// when `scalars` still look like that reduction: their own range within a quarter of the volume's
+// from each end (the fit's overshoot); a filter that rescaled or thresholded them keeps its own.
+bool SourceRange(vtkUnstructuredGrid* grid, vtkDataArray* scalars, double range[2])
+{
+  vtkFieldData* fd = grid->GetFieldData();
+  vtkDataArray* lo = fd ? fd->GetArray("scalar_range_min") : nullptr;
+  vtkDataArray* hi = fd ? fd->GetArray("scalar_range_max") : nullptr;
+  if (!lo || !hi || lo->GetNumberOfTuples() < 1 || hi->GetNumberOfTuples() < 1)
+  {
+    return false;
+  }
+  range[0] = lo->GetComponent(0, 0);
+  range[1] = hi->GetComponent(0, 0);
+  double own[2];
+  scalars->GetRange(own, 0);
+  const double slack = 0.25 * (range[1] - range[0]);
+  return std::isfinite(range[0]) && std::isfinite(range[1]) && range[1] >= range[0] &&
+    std::fabs(own[0] - range[0]) <= slack && std::fabs(own[1] - range[1]) <= slack;
+}
+
 // A vector (or other multi-component) array is one error naming how to choose a component.
 void CheckOneComponent(vtkDataArray* a, const char* kind, const std::string& file)
 {
@@ -355,6 +377,8 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     notes += (notes.empty() ? "" : "; ") + ("cell scalars '" + name + "' were averaged to the points");
   }
   CheckOneComponent(s, "point", file);
+  double source[2];
+  const bool fromVolume = s == grid->GetPointData()->GetScalars() && SourceRange(grid, s, source);
   // Only 3-D cells other than tets need tetrahedralising; lower cells beside tets (ParaView's
   // output often has some) are skipped below, not worth a pass of the triangle filter over every tet.
   vtkIdType solids = 0, tetCells = 0;
@@ -446,7 +470,13 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
   }
   try
   {
-    return TetMesh(std::move(pts), std::move(val), std::move(tets));
+    TetMesh mesh(std::move(pts), std::move(val), std::move(tets));
+    if (fromVolume)
+    {
+      mesh.Range[0] = source[0];
+      mesh.Range[1] = source[1];
+    }
+    return mesh;
   }
   catch (const Error& e)
   {

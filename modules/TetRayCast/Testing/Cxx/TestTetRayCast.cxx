@@ -689,6 +689,55 @@ TEST(TetMesh, SurfaceCellsBesideTetsAreOnlyLeftOut)
   EXPECT_GT(withHex.NumberOfTets(), tets.NumberOfTets() + 4);
 }
 
+// A reducer's output (field data scalar_range_min/max, as ReducerVTK writes) maps presets onto its
+// volume's range, as `render VOLUME --tets N` does: the fit's overshoot widened the mesh's own range,
+// and a uint16 volume's mesh (0 .. 61481 reduced to -2132 .. 65580) took the CT preset in HU, 8.8 dB
+// from the same tets rendered from the volume. Scalars a filter changed since keep their own range.
+TEST(TetMesh, ReducedMeshKeepsItsVolumesRange)
+{
+  const TetMesh tets = fixtures::GridMesh(2, 2, 2, { 0, 0, 0 }, { 1, 1, 1 }, Linear, 5);
+  vtkNew<vtkUnstructuredGrid> ug;
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkDoubleArray> f, twice;
+  f->SetName("f");
+  twice->SetName("twice");
+  for (std::size_t i = 0; i < tets.NumberOfPoints(); ++i)
+  {
+    const Vec3& p = tets.PointsArray()[i];
+    pts->InsertNextPoint(p.x, p.y, p.z);
+    f->InsertNextValue(1000 * tets.Scalars()[i]);
+    twice->InsertNextValue(2000 * tets.Scalars()[i]);
+  }
+  for (std::size_t t = 0; t < tets.NumberOfTets(); ++t)
+  {
+    const vtkIdType ids[4] = { tets.Tet(t)[0], tets.Tet(t)[1], tets.Tet(t)[2], tets.Tet(t)[3] };
+    ug->InsertNextCell(VTK_TETRA, 4, ids);
+  }
+  ug->SetPoints(pts);
+  ug->GetPointData()->SetScalars(f);
+  ug->GetPointData()->AddArray(twice);
+  double own[2];
+  f->GetRange(own);
+  const double lo = own[0] + 0.05 * (own[1] - own[0]), hi = own[1] - 0.05 * (own[1] - own[0]);
+  auto field = [&](const char* name, double v) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->InsertNextValue(v);
+    ug->GetFieldData()->AddArray(a);
+  };
+  EXPECT_EQ(TetMesh::FromVTK(ug).ScalarRange(0), own[0]); // no field: its own
+  field("scalar_range_min", lo);
+  field("scalar_range_max", hi);
+  const TetMesh reduced = TetMesh::FromVTK(ug);
+  EXPECT_EQ(reduced.ScalarRange(0), lo);
+  EXPECT_EQ(reduced.ScalarRange(1), hi);
+  EXPECT_EQ(TetMesh::FromVTK(ug, "f").ScalarRange(1), hi); // the same array by name
+  const TetMesh other = TetMesh::FromVTK(ug, "twice"); // another array: its own
+  EXPECT_EQ(other.ScalarRange(1), 2 * own[1]);
+  ug->GetPointData()->SetScalars(twice); // rescaled since (a calculator): its own range
+  EXPECT_EQ(TetMesh::FromVTK(ug).ScalarRange(1), 2 * own[1]);
+}
+
 // Points no tet uses (a clip's leftovers, stray points far away, a NaN among them) are dropped:
 // the bounds, and so the framing, are the tets', and the mesh is not refused.
 TEST(TetMesh, UnusedPointsAreDropped)
