@@ -17,6 +17,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnsignedShortArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 #include <vtkDataSetAttributes.h>
 
@@ -90,6 +91,25 @@ TEST(DataLoader, BadInputs)
 // VTK 9.1's OBJ reader trusts face indices: an out-of-range texture coordinate corrupted the heap
 // (abort), an out-of-range normal gave garbage normals. Both are checked first; relative
 // (negative) and absent indices stay valid.
+// A data set of no points and no cells as VTK's XML writers save it (a filter's empty output) says
+// it holds nothing; it said "cannot read: No Points element available in first piece found in
+// file. Reading file may fail.", VTK's reader's own error.
+TEST(DataLoader, EmptyXMLDataSetsSayTheyHoldNothing)
+{
+  const std::string mesh = std::string(ART_TEST_OUTPUT) + "/no-points.vtu";
+  const std::string surface = std::string(ART_TEST_OUTPUT) + "/no-points.vtp";
+  vtkNew<vtkXMLUnstructuredGridWriter> ug;
+  ug->SetFileName(mesh.c_str());
+  ug->SetInputData(vtkNew<vtkUnstructuredGrid>());
+  ASSERT_EQ(ug->Write(), 1);
+  vtkNew<vtkXMLPolyDataWriter> pd;
+  pd->SetFileName(surface.c_str());
+  pd->SetInputData(vtkNew<vtkPolyData>());
+  ASSERT_EQ(pd->Write(), 1);
+  ExpectError(mesh, "holds no cells");
+  ExpectError(surface, "holds no polygons");
+}
+
 TEST(DataLoader, ObjFaceIndicesAreChecked)
 {
   ExpectError(Bad + "texcoord-out-of-range.obj", "line 11: a face refers to texture coordinate 5 of 4 defined");
