@@ -167,6 +167,10 @@ int Run(const cli::Options& o)
   const bool asDouble = volume.DoubleValues;
   const double range = volume.Range[1] - volume.Range[0];
   const double pct = range > 0 ? 100.0 / range : 0.0;
+  // A constant or linear volume is matched to round-off long before the voxels' resolution: the
+  // reduction stops there, which is no lack of voxels.
+  const double magnitude = std::max({ std::fabs(volume.Range[0]), std::fabs(volume.Range[1]), range, 1e-300 });
+  auto exact = [&](const art::ReducedMesh& m) { return m.Max <= 1e-9 * magnitude; };
   std::vector<cli::Json> levels;
   const std::filesystem::path op(outPath);
   for (size_t i = 0; i < meshes.size(); ++i)
@@ -193,7 +197,8 @@ int Run(const cli::Options& o)
         last ? "output" : "level", file.c_str(), Grouped(m.NumberOfTets()).c_str(),
         Grouped(m.NumberOfVertices()).c_str(), m.Rms, m.Rms * pct, m.Max, m.Max * pct, m.BuildSeconds,
         m.TargetReached ? ""
-        : m.TargetTets > 0 ? " (tet budget not reached: no finer tets than the voxels allow)"
+        : m.TargetTets > 0 ? (exact(m) ? " (tet budget not reached: the fit is exact, no tet has an error left to refine)"
+                                       : " (tet budget not reached: no finer tets than the voxels allow)")
                            : " (error bound not reached: no finer tets than the voxels allow)");
     }
   }
