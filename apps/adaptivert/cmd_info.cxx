@@ -10,13 +10,16 @@
 #include <vtkCellData.h>
 #include <vtkCellTypes.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <filesystem>
@@ -181,6 +184,30 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
       s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "",
       s->GetNumberOfComponents() > 1 ? "magnitude " : "", Range(r[0], r[1], " .. ").c_str(),
       s->GetNumberOfComponents() > 1 ? (" (--array " + art::ComponentHint(s) + ")").c_str() : "");
+    // NaN voxels (a masked MRI map, a statistics volume) are left out of VTK's range: the range
+    // alone looked fine, and render and reduce then refused the volume.
+    long long nan = 0, inf = 0;
+    auto count = [&](const auto* v, vtkIdType n) {
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        nan += std::isnan(v[i]) ? 1 : 0;
+        inf += std::isinf(v[i]) ? 1 : 0;
+      }
+    };
+    if (auto* f = vtkFloatArray::SafeDownCast(s))
+    {
+      count(f->GetPointer(0), f->GetNumberOfValues());
+    }
+    else if (auto* d = vtkDoubleArray::SafeDownCast(s))
+    {
+      count(d->GetPointer(0), d->GetNumberOfValues());
+    }
+    if (nan + inf > 0)
+    {
+      Out(text, "  non-finite   %s NaN and %s infinite values (render and reduce need finite voxels: replace them first, e.g. with numpy.nan_to_num)\n",
+        Grouped(nan).c_str(), Grouped(inf).c_str());
+    }
+    j.Set("nan_values", nan).Set("infinite_values", inf);
     if (img->GetPointData()->GetNumberOfArrays() > 1)
     {
       Out(text, "  point data   %s (--array picks one)\n", ArrayList(img->GetPointData()).c_str());
