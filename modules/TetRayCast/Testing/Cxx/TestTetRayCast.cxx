@@ -446,6 +446,25 @@ TEST(TetMesh, FromImageSaysWhatIsMissing)
   vtkNew<vtkImageData> bare;
   bare->SetDimensions(4, 4, 4);
   EXPECT_THROW(TetMesh::FromImage(bare), Error);
+  // NaN voxels (a masked MRI map) are named as voxels, by their index in the extent; the message
+  // was the mesh's "point 21 has a non-finite coordinate or scalar".
+  vtkNew<vtkImageData> masked;
+  masked->SetExtent(10, 13, 0, 3, 5, 8);
+  masked->AllocateScalars(VTK_FLOAT, 1);
+  masked->GetPointData()->GetScalars()->Fill(1.0);
+  masked->GetPointData()->GetScalars()->SetComponent(1 + 4 * (1 + 4 * 1), 0, std::nan(""));
+  masked->GetPointData()->GetScalars()->SetComponent(63, 0, std::numeric_limits<double>::infinity());
+  try
+  {
+    TetMesh::FromImage(masked, "masked.vti");
+    FAIL() << "NaN voxels were accepted";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("2 voxels hold NaN or infinite values (the first at i, j, k = 11, 1, 6)"),
+      std::string::npos)
+      << e.what();
+  }
 }
 
 TEST(TetMesh, FromVTKAndBadMeshes)
