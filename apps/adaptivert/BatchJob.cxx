@@ -61,13 +61,6 @@ std::vector<std::string> OptionsToArgs(const json& s, std::string& text, const s
     {
       continue;
     }
-    // A tet mesh has no voxels to cast: its reference is the mesh itself by the exact rule (what
-    // render compares a mesh with), as a surface's is the surface; every mesh frame failed on
-    // "--reference needs a voxel volume" in a job of volumes and meshes.
-    if (key == "reference" && kind && *kind == art::DataKind::Mesh)
-    {
-      continue;
-    }
     if (value.is_boolean())
     {
       if (value.get<bool>())
