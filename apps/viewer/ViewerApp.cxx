@@ -29,6 +29,12 @@ ViewerApp::ViewerApp(ViewerOptions options)
 {
   Impl->Opt = std::move(options);
   Impl->Scene = LoadScene(Impl->Opt.File, Impl->Opt.TransferFunction, Impl->Opt.Array);
+  if (Impl->Opt.TetsGiven && !Impl->Scene.Image)
+  {
+    // A mesh or a triangle scene is shown as it is: its --tets levels were ignored without a word.
+    throw UsageError("--tets sets the reduction levels of a volume; " + Impl->Opt.File + " is a " +
+      (Impl->Scene.Surface ? "triangle scene" : "tet mesh") + ", shown as it is");
+  }
   if (!Impl->Scene.Surface && !Impl->Scene.Image && !Impl->Scene.Note.empty())
   {
     Impl->Say(Impl->Scene.Note); // a mesh's: cells tetrahedralised or left out, points dropped or merged

@@ -114,6 +114,7 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
     }
     else if (a == "--tets")
     {
+      o.TetsGiven = true;
       o.Tets.clear();
       o.TetPercents.clear();
       std::stringstream ss(value);

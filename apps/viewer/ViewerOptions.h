@@ -21,6 +21,7 @@ struct ViewerOptions
   int Width = 800, Height = 600;
   std::vector<long long> Tets;   ///< nested reduction budgets, ascending (volumes)
   std::vector<double> TetPercents; ///< more budgets as percentages of the voxel count
+  bool TetsGiven = false;         ///< --tets was given (it applies to volumes only)
   std::string Array;             ///< point (or cell) array to show (default: the active scalars)
   std::string TransferFunction = "auto";
   std::string Script;            ///< file of scripted actions (tests, demos)

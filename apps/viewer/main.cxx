@@ -31,6 +31,11 @@ int main(int argc, char** argv)
     view::ViewerApp app(opt);
     return app.Run();
   }
+  catch (const view::UsageError& e) // one that needs the file read first (--tets on a mesh)
+  {
+    std::fprintf(stderr, "adaptivert-view: %s (try 'adaptivert-view --help')\n", e.what());
+    return 2;
+  }
   catch (const art::Error& e)
   {
     std::fprintf(stderr, "adaptivert-view: %s\n", e.what());
