@@ -50,6 +50,20 @@ double OpacityImportance::Opacity(double s) const
   return a.second + (b.second - a.second) * (s - a.first) / (b.first - a.first);
 }
 
+double OpacityImportance::MaxOpacity(double lo, double hi) const
+{
+  // Piecewise linear: the maximum is at an end or at a node inside.
+  double a = std::max(Opacity(lo), Opacity(hi));
+  for (const auto& n : N)
+  {
+    if (n.first > lo && n.first < hi)
+    {
+      a = std::max(a, n.second);
+    }
+  }
+  return a;
+}
+
 double OpacityImportance::MaxSlope(double lo, double hi) const
 {
   double g = 0;

@@ -32,6 +32,8 @@ public:
   double MaxSlope(double lo, double hi) const;
   /// Opacity at s.
   double Opacity(double s) const;
+  /// Largest opacity over the scalar interval [lo, hi].
+  double MaxOpacity(double lo, double hi) const;
 
   /// Gathers each voxel's neighbourhood scalar range: min..max over its (2 radius + 1)^3 voxels.
   /// `floor` in (0, 1] is the least weight (keeps the fit's matrix SPD, abandons no region).

@@ -52,16 +52,18 @@ void TetReducer::CoarseGrid(const VoxelVolume& volume, long long tets, int cubes
 namespace
 {
 ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const LeastSquaresFit& fit,
-  std::vector<double> x, bool clamp)
+  std::vector<double> x, bool clamp, const OpacityImportance* cap)
 {
   ReducedMesh out;
-  if (clamp)
+  if (clamp || cap)
   {
     std::vector<double> lo, hi;
     fit.VertexVoxelRange(mesh, lo, hi);
     for (std::size_t v = 0; v < lo.size(); ++v)
     {
-      x[v] = lo[v] <= hi[v] ? std::min(hi[v], std::max(lo[v], x[v])) : x[v];
+      // A vertex over no voxel centre (lo > hi) keeps its fitted value.
+      const bool over = lo[v] <= hi[v] && (clamp || cap->Opacity(x[v]) > cap->MaxOpacity(lo[v], hi[v]));
+      x[v] = over ? std::min(hi[v], std::max(lo[v], x[v])) : x[v];
     }
   }
   VoxelErrorReport e = fit.VoxelErrors(mesh, x);
@@ -169,6 +171,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     importance->Prepare(volume, Opt.ImportanceFloor, Opt.ImportanceRadius);
   }
   const bool weighted = importance != nullptr;
+  const OpacityImportance* opacityCap = Opt.CapOpacity ? importance.get() : nullptr;
   LeastSquaresFit fit(volume, Opt.Regularization, importance.get());
   std::vector<int> touched(n0), all;
   std::iota(touched.begin(), touched.end(), 0);
@@ -221,11 +224,11 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
       std::iota(every.begin(), every.end(), 0);
       refit.UpdateMoments(moved, every, &y);
       refit.Solve(moved, y, Opt.SolverTolerance);
-      m = Snapshot(volume, moved, refit, y, Opt.ClampToVoxels);
+      m = Snapshot(volume, moved, refit, y, Opt.ClampToVoxels, opacityCap);
     }
     else
     {
-      m = Snapshot(volume, mesh, fit, x, Opt.ClampToVoxels);
+      m = Snapshot(volume, mesh, fit, x, Opt.ClampToVoxels, opacityCap);
     }
     m.TargetTets = budget;
     m.TargetError = errorBound;

@@ -82,6 +82,14 @@ struct ReducerOptions
   /// function (empty: plain L2). The fit, the refinement choice and an error target then use
   /// OpacityImportance's weighted error: a voxel weighs by the opacity slope it (or its fit) meets.
   std::vector<std::pair<double, double>> ScalarOpacity;
+  /// With ScalarOpacity: an output value whose opacity exceeds every opacity the transfer function
+  /// gives the voxels under its vertex's tets is clamped to their range. The least-squares fit
+  /// overshoots past thin bright structures (a head rest of a few voxels) into ranges no voxel
+  /// there has, which render as opaque speckles; overshoot into clearer ranges sharpens surfaces
+  /// and is kept. Measured (128 CT, ct-skin-bone, 500 x 500 against the voxel reference): PSNR
+  /// 23.01 / 24.82 / 26.16 -> 23.08 / 25.05 / 29.20 dB at 10k / 50k / 250k tets; clamping both
+  /// ways (ClampToVoxels) gave 21.4 / 23.3 / 28.3 dB. The fit and the levels after are unchanged.
+  bool CapOpacity = true;
   double ImportanceFloor = 0.02; ///< weight of voxels whose neighbourhood meets no opacity change
   int ImportanceRadius = 2;      ///< neighbourhood (2 r + 1)^3 voxels whose scalar range counts
   int ReweighSteps = 3;          ///< weighted fit: extra reweighting steps on the coarse mesh

@@ -114,6 +114,7 @@ int vtkAdaptiveTetReducer::RequestData(
   opt.ErrorRelative = this->ErrorRelative;
   opt.RefineFraction = this->RefineFraction;
   opt.ClampToVoxels = this->ClampToVoxels;
+  opt.CapOpacity = this->CapOpacity;
   opt.RelocateVertices = this->RelocateVertices;
   opt.SolverTolerance = this->SolverTolerance;
   opt.Refine = this->Refinement == EDGE_SPLIT ? art::ReducerOptions::Refinement::EdgeSplit
@@ -262,6 +263,7 @@ void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ErrorRelative: " << this->ErrorRelative << "\n";
   os << indent << "RefineFraction: " << this->RefineFraction << "\n";
   os << indent << "ClampToVoxels: " << this->ClampToVoxels << "\n";
+  os << indent << "CapOpacity: " << this->CapOpacity << "\n";
   os << indent << "RelocateVertices: " << this->RelocateVertices << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "VectorMode: " << this->VectorMode << " (component " << this->VectorComponent << ")\n";

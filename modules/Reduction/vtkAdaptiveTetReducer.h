@@ -155,6 +155,16 @@ public:
   vtkGetObjectMacro(ScalarOpacity, vtkPiecewiseFunction);
 
   /**
+   * With a ScalarOpacity: clamp an output value to the range of the voxels under its vertex's
+   * tets when its opacity exceeds every opacity those voxels have (default on). The fit's
+   * overshoot past thin bright structures otherwise renders as opaque speckles; 0.4-4 dB better
+   * PSNR on the CT head (see art::ReducerOptions::CapOpacity).
+   */
+  vtkSetMacro(CapOpacity, bool);
+  vtkGetMacro(CapOpacity, bool);
+  vtkBooleanMacro(CapOpacity, bool);
+
+  /**
    * Least voxel weight of the opacity-weighted reduction, in (0, 1] (default 0.02).
    */
   vtkSetClampMacro(ImportanceFloor, double, 1e-6, 1.0);
@@ -191,6 +201,7 @@ protected:
   int ErrorMetric = RMS;
   bool ErrorRelative = false;
   bool ClampToVoxels = false;
+  bool CapOpacity = true;
   bool RelocateVertices = false;
   double RefineFraction = 0.0;
   double SolverTolerance = 1e-8;

@@ -194,6 +194,52 @@ TEST(TetReducer, ClampToVoxelsRemovesTheOvershootAtAJump)
   EXPECT_GT(changed, 10);
 }
 
+TEST(TetReducer, CapOpacityClampsOnlyTheOvershootThatShowsMoreOpacity)
+{
+  // The ball of the test above, reduced for a transfer function: a value past its voxels' range
+  // is clamped only on the side where the opacity is higher than theirs.
+  const int d[3] = { 24, 24, 24 };
+  const double sp[3] = { 1, 1, 1 }, o[3] = { 0, 0, 0 };
+  auto img = Field(d, sp, o, [](double x, double y, double z) {
+    return (x - 11.3) * (x - 11.3) + (y - 12.1) * (y - 12.1) + (z - 11.7) * (z - 11.7) < 49 ? 100.0 : 0.0;
+  });
+  const auto vol = art::VolumeFromImage(img);
+  for (const bool rising : { true, false })
+  {
+    art::ReducerOptions opt;
+    opt.TargetTets = 3000;
+    opt.ScalarOpacity = rising ? std::vector<std::pair<double, double>>{ { 0, 0 }, { 200, 1 } }
+                               : std::vector<std::pair<double, double>>{ { -100, 1 }, { 100, 0 } };
+    opt.CapOpacity = false;
+    const art::ReducedMesh fit = art::TetReducer(opt).Run(vol).back();
+    opt.CapOpacity = true;
+    const art::ReducedMesh capped = art::TetReducer(opt).Run(vol).back();
+    ExpectValid(capped);
+    ASSERT_EQ(capped.Tets, fit.Tets) << "the cap changes the values only";
+    const auto [fmn, fmx] = std::minmax_element(fit.Values.begin(), fit.Values.end());
+    ASSERT_GT(*fmx, 100.5) << "the fit should overshoot the ball";
+    ASSERT_LT(*fmn, -0.5) << "and undershoot the air";
+    const auto [mn, mx] = std::minmax_element(capped.Values.begin(), capped.Values.end());
+    if (rising)
+    {
+      EXPECT_LE(*mx, 100.0) << "more opaque than any voxel: clamped";
+      EXPECT_EQ(*mn, *fmn) << "clearer than the air: kept";
+    }
+    else
+    {
+      EXPECT_GE(*mn, 0.0);
+      EXPECT_EQ(*mx, *fmx);
+    }
+    int changed = 0;
+    for (std::size_t v = 0; v < capped.Values.size(); ++v)
+    {
+      changed += capped.Values[v] != fit.Values[v];
+    }
+    EXPECT_GT(changed, 0);
+    EXPECT_GE(capped.WeightedRms, fit.WeightedRms) << "the fit was the least-squares optimum";
+  }
+}
+
 TEST(TetReducer, SmallVariationsOnALargeOffset)
 {
   // 1000 + 1e-6 g: the solver's stopping rule must follow the variation, not the offset (it used
