@@ -9,6 +9,7 @@
 
 #include <vtkAlgorithm.h>
 #include <vtkAppendFilter.h>
+#include <vtkAppendPolyData.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
@@ -86,6 +87,27 @@ void CheckPolyIndices(vtkPolyData* pd, const std::string& path)
     }
   }
 }
+// A multiblock file whose blocks are all polydata (.vtp, .pvtp: a CAD assembly or a surface
+// ParaView extracted from blocks) is a triangle scene; any other is a mesh. Its XML lists the
+// blocks' files, so the kind is known without reading them.
+DataKind MultiBlockKind(const std::string& path)
+{
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  static const std::regex fileAttr("\\bfile\\s*=\\s*\"([^\"]*)\"");
+  bool any = false;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), fileAttr); it != std::sregex_iterator(); ++it)
+  {
+    const std::string e = LowerExtension((*it)[1].str());
+    if (e != ".vtp" && e != ".pvtp")
+    {
+      return DataKind::Mesh;
+    }
+    any = true;
+  }
+  return any ? DataKind::Surface : DataKind::Mesh;
+}
+
 // A legacy .vtk file may hold any data set: its header says which.
 DataKind LegacyKind(const std::string& path)
 {
@@ -184,6 +206,10 @@ DataKind KindOf(const std::string& path)
   {
     return DataKind::Surface;
   }
+  if (e == ".vtm")
+  {
+    return MultiBlockKind(path);
+  }
   if (MeshExt.count(e))
   {
     return DataKind::Mesh;
@@ -206,7 +232,7 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
 {
   if (KindOf(path) != DataKind::Surface)
   {
-    throw Error("is not a surface (expected .ply .obj .stl .vtp .pvtp or polygons in .vtk)", path);
+    throw Error("is not a surface (expected .ply .obj .stl .vtp .pvtp, a .vtm of .vtp blocks, or polygons in .vtk)", path);
   }
   const std::string e = LowerExtension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
@@ -234,6 +260,10 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   {
     reader = FileReader<vtkXMLPPolyDataReader>(path);
   }
+  else if (e == ".vtm")
+  {
+    reader = FileReader<vtkXMLMultiBlockDataReader>(path);
+  }
   else
   {
     reader = FileReader<vtkXMLPolyDataReader>(path);
@@ -241,7 +271,28 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   if (reader)
   {
     RunReader(reader, path);
-    pd->ShallowCopy(reader->GetOutputDataObject(0));
+    if (auto* blocks = vtkCompositeDataSet::SafeDownCast(reader->GetOutputDataObject(0)))
+    {
+      // Every block's polygons in one scene (their arrays kept where all blocks have them).
+      vtkNew<vtkAppendPolyData> all;
+      auto it = vtk::TakeSmartPointer(blocks->NewIterator());
+      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      {
+        if (auto* block = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
+        {
+          all->AddInputData(block);
+        }
+      }
+      if (all->GetNumberOfInputConnections(0) > 0)
+      {
+        all->Update();
+        pd->ShallowCopy(all->GetOutput());
+      }
+    }
+    else
+    {
+      pd->ShallowCopy(reader->GetOutputDataObject(0));
+    }
   }
   if (!plyDoubles.empty() && static_cast<vtkIdType>(plyDoubles.size()) == 3 * pd->GetNumberOfPoints())
   {

@@ -17,6 +17,8 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnsignedShortArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkXMLMultiBlockDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 #include <vtkDataSetAttributes.h>
@@ -108,6 +110,38 @@ TEST(DataLoader, EmptyXMLDataSetsSayTheyHoldNothing)
   ASSERT_EQ(pd->Write(), 1);
   ExpectError(mesh, "holds no cells");
   ExpectError(surface, "holds no polygons");
+}
+
+// A multiblock file of polydata blocks (a CAD assembly, a surface ParaView extracted from blocks)
+// is a triangle scene of every block's polygons; it was read as a mesh and refused ("holds no 3-D
+// cells ... a surface renders from .vtp, .ply, .obj or .stl"). A .vtm of grids stays a mesh.
+TEST(DataLoader, MultiBlockOfSurfacesIsASurface)
+{
+  const std::string path = std::string(ART_TEST_OUTPUT) + "/surfaces.vtm";
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  vtkNew<vtkPolyData> triangle;
+  vtkNew<vtkPoints> pts;
+  pts->InsertNextPoint(2, 0, 0);
+  pts->InsertNextPoint(3, 0, 0);
+  pts->InsertNextPoint(2, 1, 0);
+  triangle->SetPoints(pts);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType ids[3] = { 0, 1, 2 };
+  polys->InsertNextCell(3, ids);
+  triangle->SetPolys(polys);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, sphere->GetOutput());
+  blocks->SetBlock(1, triangle);
+  vtkNew<vtkXMLMultiBlockDataWriter> w;
+  w->SetFileName(path.c_str());
+  w->SetInputData(blocks);
+  ASSERT_EQ(w->Write(), 1);
+  EXPECT_EQ(art::KindOf(path), art::DataKind::Surface);
+  auto pd = art::LoadSurface(path);
+  EXPECT_EQ(pd->GetNumberOfPolys(), sphere->GetOutput()->GetNumberOfPolys() + 1);
+  EXPECT_EQ(pd->GetBounds()[1], 3.0);
+  EXPECT_EQ(art::KindOf(std::string(ART_SOURCE_DIR) + "/tests/data/pieces/blocks.vtm"), art::DataKind::Mesh);
 }
 
 TEST(DataLoader, ObjFaceIndicesAreChecked)
