@@ -60,7 +60,8 @@ void Declare(cli::Options& o)
   o.Add("clamp", 0, "", "clamp each vertex value to the range of the voxels under its tets (no overshoot at sharp edges; for maximum-intensity projection)");
   o.Add("tf", 0, "NAME|FILE",
     "reduce for this transfer function's opacity (a preset, e.g. ct-skin-bone, or a file of "
-    "'scalar r g b opacity' lines, or a ParaView preset .json): tets go where opacity changes");
+    "'scalar r g b opacity' lines, or a ParaView preset .json): tets go where opacity changes, "
+    "and a value fitted past its voxels into a more opaque range is clamped to theirs");
 }
 
 int Run(const cli::Options& o)

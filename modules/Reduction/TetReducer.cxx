@@ -51,10 +51,11 @@ void TetReducer::CoarseGrid(const VoxelVolume& volume, long long tets, int cubes
 
 namespace
 {
-ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const LeastSquaresFit& fit,
+// The fitted values as output: clamped to the range of the voxels under each vertex's tets,
+// all of them (clamp) or those more opaque than those voxels (cap).
+std::vector<double> OutputValues(const BisectionMesh& mesh, const LeastSquaresFit& fit,
   std::vector<double> x, bool clamp, const OpacityImportance* cap)
 {
-  ReducedMesh out;
   if (clamp || cap)
   {
     std::vector<double> lo, hi;
@@ -66,6 +67,14 @@ ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const Le
       x[v] = over ? std::min(hi[v], std::max(lo[v], x[v])) : x[v];
     }
   }
+  return x;
+}
+
+ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const LeastSquaresFit& fit,
+  const std::vector<double>& fitted, bool clamp, const OpacityImportance* cap)
+{
+  ReducedMesh out;
+  const std::vector<double> x = OutputValues(mesh, fit, fitted, clamp, cap);
   VoxelErrorReport e = fit.VoxelErrors(mesh, x);
   out.TetRms = std::move(e.TetRms);
   out.TetMax = std::move(e.TetMax);
@@ -282,10 +291,13 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     }
     // The error that decides: cached moments give the squared error per tet for free; the
     // max needs a pass over the voxels.
+    // An error bound holds for the values output, clamped or capped (a few percent above the fit's).
+    const bool clamped = Opt.ClampToVoxels || opacityCap;
+    auto outputErrors = [&]() { return fit.VoxelErrors(mesh, clamped ? OutputValues(mesh, fit, x, Opt.ClampToVoxels, opacityCap) : x); };
     double global;
     if (maxMetric && haveError)
     {
-      VoxelErrorReport e = fit.VoxelErrors(mesh, x);
+      VoxelErrorReport e = outputErrors();
       priority = std::move(e.TetWeightedMax);
       global = e.WeightedMax;
     }
@@ -300,7 +312,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
       if (haveError && global <= errorBound)
       {
         reweigh();
-        VoxelErrorReport e = fit.VoxelErrors(mesh, x);
+        VoxelErrorReport e = outputErrors();
         priority = std::move(e.TetWeightedSse);
         global = e.WeightedRms;
       }
@@ -309,6 +321,12 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     {
       fit.SquaredErrors(mesh, x, priority);
       global = std::sqrt(std::accumulate(priority.begin(), priority.end(), 0.0) / nvox);
+      if (haveError && global <= errorBound && clamped)
+      {
+        VoxelErrorReport e = outputErrors();
+        priority = std::move(e.TetWeightedSse);
+        global = e.WeightedRms;
+      }
     }
     if (haveError && global <= errorBound)
     {

@@ -238,6 +238,16 @@ TEST(TetReducer, CapOpacityClampsOnlyTheOvershootThatShowsMoreOpacity)
     EXPECT_GT(changed, 0);
     EXPECT_GE(capped.WeightedRms, fit.WeightedRms) << "the fit was the least-squares optimum";
   }
+  // An error bound holds for the capped values, not only for the fit's.
+  for (double bound = 7.0; bound <= 15.0; bound += 1.0)
+  {
+    art::ReducerOptions opt;
+    opt.TargetError = bound;
+    opt.ScalarOpacity = { { 0, 0 }, { 200, 1 } };
+    const art::ReducedMesh m = art::TetReducer(opt).Run(vol).back();
+    EXPECT_TRUE(m.TargetReached) << bound;
+    EXPECT_LE(m.WeightedRms, bound);
+  }
 }
 
 TEST(TetReducer, SmallVariationsOnALargeOffset)
