@@ -164,6 +164,25 @@ for clamp in (False, True):
 assert ranges[False][0] < lo - 1e-6 or ranges[False][1] > hi + 1e-6, (ranges, lo, hi)
 assert ranges[True][0] >= lo and ranges[True][1] <= hi, (ranges, lo, hi)
 
+# CapOpacity (on by default with a ScalarOpacity): no value more opaque than the voxels under it,
+# so with an opacity rising past the top of the range nothing is fitted above it.
+rising = vtkPiecewiseFunction()
+rising.AddPoint(lo, 0.0)
+rising.AddPoint(2 * hi, 1.0)
+tops = {}
+for cap in (False, True):
+    r = adaptivert.vtkAdaptiveTetReducer()
+    r.SetInputData(ripples)
+    r.SetTargetTets(1500)
+    r.SetScalarOpacity(rising)
+    if not cap:
+        r.CapOpacityOff()
+    assert r.GetCapOpacity() == cap
+    r.Update()
+    tops[cap] = r.GetOutput().GetPointData().GetScalars().GetRange()
+assert tops[False][1] > hi + 1e-6 and tops[True][1] <= hi, (tops, lo, hi)
+assert tops[True][0] == tops[False][0], tops  # the clearer side keeps its overshoot
+
 # A named array that is not there is an error listing the arrays, not a reduction of the scalars.
 messages = []
 r = adaptivert.vtkAdaptiveTetReducer()
