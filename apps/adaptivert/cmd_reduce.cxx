@@ -44,6 +44,7 @@ std::string Grouped(long long n)
 
 void Declare(cli::Options& o)
 {
+  o.Add("output", 'o', "FILE", "the output .vtu, as render takes it (or give it after the input)");
   o.Add("array", 0, "NAME", "point array to reduce (default: the active scalars); NAME:magnitude or NAME:N for a vector's magnitude or component N");
   o.Add("tets", 't', "N", "stop at N tetrahedra (or N% of the voxel count)");
   o.Add("max-error", 'e', "E",
@@ -66,12 +67,14 @@ void Declare(cli::Options& o)
 
 int Run(const cli::Options& o)
 {
+  // -o OUT as render takes it, or OUT after the input ('reduce in.mha -o out.vtu' was an unknown option).
   const auto& pos = o.Positional();
-  if (pos.size() != 2)
+  if (pos.size() != (o.Has("output") ? 1u : 2u))
   {
-    throw cli::UsageError("needs an input volume and an output .vtu");
+    throw cli::UsageError(o.Has("output") && pos.size() == 2 ? "give the output once: after the input or with -o"
+                                                           : "needs an input volume and an output .vtu");
   }
-  const std::string in = pos[0], outPath = pos[1];
+  const std::string in = pos[0], outPath = o.Has("output") ? o.Get("output") : pos[1];
   if (std::filesystem::path(outPath).extension() != ".vtu")
   {
     throw cli::UsageError("the output must be a .vtu file, got '" + outPath + "'");
@@ -272,7 +275,7 @@ int Run(const cli::Options& o)
 
 cli::Registrar reg({ "reduce",
   "reduce a volume to an adaptive tetrahedral grid by least squares (to a tet count or an error)",
-  "adaptivert reduce [options] IN OUT.vtu",
+  "adaptivert reduce [options] IN OUT.vtu  (or IN -o OUT.vtu)",
   "  adaptivert reduce data/ct-head-128.mha head.vtu --tets 20000\n"
   "  adaptivert reduce head.mha head.vtu --max-error 1% --metric rms\n"
   "  adaptivert reduce head.mha head.vtu --tets 1% --levels 0.01%,0.1%   (writes head_<n>.vtu too)\n"
