@@ -203,6 +203,10 @@ Obj Parse(const std::string& path)
       return false;
     }
     ++number;
+    if (number == 1 && s.rfind("\xEF\xBB\xBF", 0) == 0)
+    {
+      s.erase(0, 3); // a UTF-8 byte-order mark (some Windows exporters): its first vertex was lost
+    }
     if (const std::size_t hash = s.find('#'); hash != std::string::npos)
     {
       s.resize(hash);
@@ -317,8 +321,12 @@ std::vector<std::array<double, 3>> DiffuseColours(const Obj& obj, const std::str
     std::ifstream in(beside(lib));
     std::string line;
     int current = -1;
-    while (std::getline(in, line))
+    for (bool first = true; std::getline(in, line); first = false)
     {
+      if (first && line.rfind("\xEF\xBB\xBF", 0) == 0)
+      {
+        line.erase(0, 3); // a UTF-8 byte-order mark
+      }
       const char* p = SkipSpace(line.c_str());
       const char* k = p;
       while (*p && !IsSpace(*p))

@@ -307,7 +307,13 @@ void CheckPly(const std::string& path, std::vector<double>* xyz, std::vector<dou
     throw Error("cannot open file", path);
   }
   std::string line;
-  if (!std::getline(in, line) || line.rfind("ply", 0) != 0)
+  if (std::getline(in, line) && line.rfind("\xEF\xBB\xBFply", 0) == 0)
+  {
+    throw Error("starts with a UTF-8 byte-order mark before 'ply', which VTK's PLY reader does not take: "
+                "save it without one",
+      path);
+  }
+  if (!in || line.rfind("ply", 0) != 0)
   {
     throw Error("not a PLY file (no 'ply' magic line)", path);
   }

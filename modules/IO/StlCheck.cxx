@@ -20,6 +20,7 @@ void CheckStl(const std::string& path)
   unsigned char head[256] = {};
   in.read(reinterpret_cast<char*>(head), sizeof head);
   const auto got = static_cast<size_t>(in.gcount());
+
   // Text as VTK (vtksys::DetectFileType) sees it: few bytes outside printable ASCII and whitespace.
   size_t odd = 0;
   for (size_t i = 0; i < got; ++i)
@@ -28,6 +29,11 @@ void CheckStl(const std::string& path)
   }
   if (odd * 20 <= got) // at most 5%
   {
+    if (got >= 3 && head[0] == 0xEF && head[1] == 0xBB && head[2] == 0xBF)
+    {
+      throw Error("starts with a UTF-8 byte-order mark, which VTK's STL reader does not take: save it without one",
+        path);
+    }
     return;
   }
   if (got < 84)

@@ -144,6 +144,29 @@ TEST(DataLoader, MultiBlockOfSurfacesIsASurface)
   EXPECT_EQ(art::KindOf(std::string(ART_SOURCE_DIR) + "/tests/data/pieces/blocks.vtm"), art::DataKind::Mesh);
 }
 
+// A UTF-8 byte-order mark (some Windows exporters write one) before an OBJ's or a material
+// library's first line is skipped: the first vertex was lost ("line 4: a face refers to vertex 3
+// of 2 defined") and the first material. PLY and STL text, read by VTK, are one clear line.
+TEST(DataLoader, ByteOrderMarks)
+{
+  const std::string dir = std::string(ART_TEST_OUTPUT) + "/";
+  const std::string bom = "\xEF\xBB\xBF";
+  std::ofstream(dir + "bom.mtl") << bom << "newmtl red\nKd 1 0 0\n";
+  std::ofstream(dir + "bom.obj") << bom << "v 0 0 0\nv 1 0 0\nv 0 1 0\nmtllib bom.mtl\nusemtl red\nf 1 2 3\n";
+  auto pd = art::LoadSurface(dir + "bom.obj");
+  EXPECT_EQ(pd->GetNumberOfPoints(), 3);
+  EXPECT_EQ(pd->GetNumberOfPolys(), 1);
+  ASSERT_NE(pd->GetCellData()->GetScalars(), nullptr);
+  EXPECT_EQ(pd->GetCellData()->GetScalars()->GetComponent(0, 0), 255);
+  std::ofstream(dir + "bom.ply") << bom << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                 << "property float y\nproperty float z\nelement face 1\n"
+                                 << "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  ExpectError(dir + "bom.ply", "starts with a UTF-8 byte-order mark before 'ply'");
+  std::ofstream(dir + "bom.stl") << bom << "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                                 << "vertex 0 1 0\nendloop\nendfacet\nendsolid x\n";
+  ExpectError(dir + "bom.stl", "starts with a UTF-8 byte-order mark");
+}
+
 TEST(DataLoader, ObjFaceIndicesAreChecked)
 {
   ExpectError(Bad + "texcoord-out-of-range.obj", "line 11: a face refers to texture coordinate 5 of 4 defined");
