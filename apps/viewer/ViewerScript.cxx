@@ -19,6 +19,10 @@ std::vector<ScriptAction> ReadScript(const std::string& path)
   std::string line;
   for (int n = 1; std::getline(in, line); ++n)
   {
+    if (n == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+    {
+      line.erase(0, 3); // a UTF-8 byte-order mark (Windows editors): "unknown action 'key'" with it
+    }
     const auto hash = line.find('#');
     if (hash != std::string::npos)
     {

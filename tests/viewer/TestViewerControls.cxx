@@ -182,6 +182,17 @@ TEST(ViewerScript, ReadsEveryAction)
   EXPECT_EQ(s[8].Text, "out.png");
 }
 
+// A script saved by a Windows editor: a UTF-8 byte-order mark before the first action (it was
+// "unknown action '\xEF\xBB\xBFkey'") and CRLF line ends.
+TEST(ViewerScript, ByteOrderMarkAndCrlf)
+{
+  const auto s = ReadScript(WriteTemp("viewer-bom.script", "\xEF\xBB\xBFkey h\r\nazimuth 30\r\n"));
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].What, ScriptAction::Kind::Key);
+  EXPECT_EQ(s[0].Text, "h");
+  EXPECT_DOUBLE_EQ(s[1].Value, 30);
+}
+
 TEST(ViewerScript, MalformedLinesNameFileAndLine)
 {
   const char* bad[] = { "jump 3\n", "wait\n", "wait -1\n", "zoom 0\n", "key ab\n", "azimuth 30 40\n", "drag 5\n",
