@@ -56,7 +56,7 @@ void Declare(cli::Options& o)
     "auto");
   o.Add("unit-distance", 0, "U",
     "world distance over which the transfer function's opacity applies (default: 1 for CT in Hounsfield "
-    "units, in mm; else the data's mean sample spacing, so any unit renders alike)");
+    "units with voxels of 0.1-10 mm; else the data's mean sample spacing, so any unit renders alike)");
   o.Add("iso", 0, "V[,V..]", "iso-surfaces at these scalar values (shaded, combined with the volume)");
   o.Add("iso-opacity", 0, "A", "opacity of every iso-surface", "1");
   o.Add("clip", 0, "X,Y,Z,NX,NY,NZ[;..]",
@@ -82,7 +82,7 @@ void Declare(cli::Options& o)
   o.Add("no-error", 0, "", "skip the reference render and the error figures");
 }
 
-// A preset's opacities are per unit distance: 1 mm on CT in HU, else the data's sample spacing;
+// A preset's opacities are per unit distance: 1 mm on CT in HU of mm voxels, else the data's sample spacing;
 // --unit-distance overrides that and a file's own unit-distance line.
 // `points`: a mesh's distinct points (TetMesh), for a preset's unit distance; -1 for a volume.
 art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo, double hi, double points = -1)

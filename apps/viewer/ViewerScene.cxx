@@ -99,7 +99,7 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const std:
     s.Note = note;
     points = static_cast<double>(mesh.NumberOfPoints()); // duplicates merged
   }
-  // A preset's unit distance follows the data (1 mm on CT in HU, else its sample spacing), as in render.
+  // A preset's unit distance follows the data (1 mm on CT in HU of mm voxels, else its sample spacing), as in render.
   s.Transfer = tf.find_first_of("./") != std::string::npos
     ? art::TransferFunction::FromFile(tf)
     : art::TransferFunction::PresetFor(tf, vtkDataSet::SafeDownCast(data), s.Range[0], s.Range[1], points);

@@ -214,7 +214,11 @@ std::vector<std::string> TransferFunction::PresetNames()
 
 double TransferFunction::PresetUnitDistance(double lo, double hi, double h)
 {
-  return LooksLikeHU(lo, hi) || !(h > 0.0) || !std::isfinite(h) ? 1.0 : h;
+  if (!(h > 0.0) || !std::isfinite(h))
+  {
+    return 1.0;
+  }
+  return LooksLikeHU(lo, hi) && h >= 0.1 && h <= 10.0 ? 1.0 : h;
 }
 
 double TransferFunction::SampleSpacing(vtkDataSet* data, double points)

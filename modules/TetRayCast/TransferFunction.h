@@ -49,9 +49,11 @@ public:
   /// Does the range [lo, hi] look like CT in Hounsfield units (air near -1000, bone above 500)?
   static bool LooksLikeHU(double lo, double hi) { return lo <= -500.0 && hi >= 500.0; }
   /// The unit distance a preset gets over data with scalar range [lo, hi] and mean sample spacing
-  /// h: 1 for CT in Hounsfield units (stored in millimetres; the CT presets' opacities are per
-  /// millimetre), else h, so that the same samples render alike in metres, millimetres or microns
-  /// (ParaView likewise scales its unit distance to the data).
+  /// h: 1 for CT in Hounsfield units with voxels of 0.1 to 10 (millimetres, as clinical and most
+  /// industrial CT store them; the CT presets' opacities are per millimetre), else h, so that the
+  /// same samples render alike in metres, millimetres or microns (ParaView likewise scales its
+  /// unit distance to the data): a CT in metres or a micro-CT of 20-micron voxels would otherwise
+  /// be all but clear, and one in centimetres too thick to see into.
   static double PresetUnitDistance(double lo, double hi, double h);
   /// Mean sample spacing of a data set: an image's geometric mean spacing over its axes of more
   /// than one sample; for other data the field "source_spacing" (which the reducer writes, so a

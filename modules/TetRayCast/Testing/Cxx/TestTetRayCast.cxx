@@ -1047,9 +1047,14 @@ TEST(TransferFunction, PresetScalesWithTheSampleSpacing)
   EXPECT_LT(maxDiff(ref, render(km, true)), 1e-4);
   EXPECT_LT(meanAlpha(render(m, false)), 0.01);
   EXPECT_GT(meanAlpha(render(km, false)), 0.5);
-  // CT in Hounsfield units keeps the presets' millimetres whatever its spacing.
+  // CT in Hounsfield units with voxels of 0.1 to 10 mm keeps the presets' millimetres.
   EXPECT_EQ(TransferFunction::PresetUnitDistance(-1024, 3071, 0.5), 1.0);
   EXPECT_EQ(TransferFunction::PresetUnitDistance(0, 255, 0.5), 0.5);
+  // CT whose voxels are no millimetres (metres, a micro-CT's microns): scaled as other data.
+  EXPECT_EQ(TransferFunction::PresetUnitDistance(-1024, 3071, 0.001), 0.001);
+  EXPECT_EQ(TransferFunction::PresetUnitDistance(-1024, 3071, 0.02), 0.02);
+  EXPECT_EQ(TransferFunction::PresetUnitDistance(-1024, 3071, 50.0), 50.0);
+  EXPECT_EQ(TransferFunction::PresetUnitDistance(-1024, 3071, 5.0), 1.0);
 }
 
 // Spacing of data other than images: the reducer's source_spacing field, else the mean point spacing
