@@ -357,6 +357,28 @@ int Run(const cli::Options& o, const std::string& input)
   {
     m = art::CompareImages(img, ref);
   }
+  if (settings.mode == art::RenderSettings::Mode::Composite && settings.isos.empty() && st.counters.hits > 0 &&
+    !settings.tf.Transparent(range[0], range[1]))
+  {
+    // Opacity that builds up over too long a unit distance (data in other units than the
+    // transfer function's) gives an image all but clear, whose error figures look perfect.
+    float top = 0.f;
+    for (int y = 0; y < img.Height(); ++y)
+    {
+      for (int x = 0; x < img.Width(); ++x)
+      {
+        top = std::max(top, img.Pixel(x, y)[3]);
+      }
+    }
+    if (top < 0.02f)
+    {
+      std::ostringstream ss;
+      ss << (note.empty() ? "" : "; ") << "the image is all but clear (opacity at most " << top
+         << "): the transfer function's opacity applies per " << settings.tf.UnitDistance()
+         << " world units; a smaller --unit-distance shows more";
+      note += ss.str();
+    }
+  }
   img.CompositeOver({ view.background[0], view.background[1], view.background[2] });
   art::WriteImage(img, view.output);
 
