@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace art
@@ -37,7 +38,21 @@ void VoxelVolume::Validate(const std::string& file)
     const double v = Value(i);
     if (!std::isfinite(v))
     {
-      throw Error("the scalars hold NaN or infinite values", file);
+      // Which voxel and how many, as render says it (a masked map's NaN outside the brain).
+      long long count = 0;
+      for (long long j = i; j < n; ++j)
+      {
+        count += std::isfinite(Value(j)) ? 0 : 1;
+      }
+      const double ijk[3] = { double(i % Dims[0]), double((i / Dims[0]) % Dims[1]),
+        double(i / (static_cast<long long>(Dims[0]) * Dims[1])) };
+      double w[3];
+      IndexToWorld(ijk, w);
+      char at[120];
+      std::snprintf(at, sizeof at, "%.6g, %.6g, %.6g", w[0], w[1], w[2]);
+      throw Error("the scalars hold NaN or infinite values: " + std::to_string(count) + " voxel" + (count > 1 ? "s" : "") +
+          ", the first at x, y, z = " + at + " (replace them first, e.g. with numpy.nan_to_num)",
+        file);
     }
     lo = std::min(lo, v);
     hi = std::max(hi, v);

@@ -22,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 using fixtures::ExpectValid;
 using fixtures::Field;
@@ -365,6 +366,25 @@ TEST(TetReducer, BadInputIsAClearError)
   }
   auto empty = vtkSmartPointer<vtkImageData>::New();
   EXPECT_THROW(art::VolumeFromImage(empty), art::Error);
+  // NaN voxels (a masked map) are counted and the first one placed in the world, past an extent
+  // that does not start at 0; it said only "the scalars hold NaN or infinite values".
+  auto masked = Field(d, s, o, [](double x, double, double) { return x; });
+  masked->SetExtent(10, 14, 0, 4, 5, 9);
+  masked->SetSpacing(0.5, 0.5, 0.5);
+  masked->SetOrigin(100, 0, 0);
+  masked->GetPointData()->GetScalars()->SetComponent(1 + 5 * (1 + 5 * 1), 0, std::nan(""));
+  masked->GetPointData()->GetScalars()->SetComponent(124, 0, -std::numeric_limits<double>::infinity());
+  try
+  {
+    art::VolumeFromImage(masked, "masked.vti");
+    FAIL() << "accepted NaN voxels";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("NaN or infinite values: 2 voxels, the first at x, y, z = 105.5, 0.5, 3"),
+      std::string::npos)
+      << e.what();
+  }
   // A zero spacing is an error naming the axis (it gave zero-volume tets); a negative one is a
   // flipped axis, reduced like the same voxels stored the other way round.
   auto zero = Field(d, s, o, [](double x, double, double) { return x; });
