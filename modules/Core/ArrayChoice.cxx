@@ -22,12 +22,19 @@ vtkDataArray* ChooseArray(vtkDataSetAttributes* d, const std::string& name, bool
   {
     return s;
   }
-  for (int i = 0; i < d->GetNumberOfArrays(); ++i)
+  // VTK's own bookkeeping arrays (vtkOriginalPointIds from ParaView's Extract Selection,
+  // vtkValidPointMask from a probe, vtkGhostType, ...) come last: a file without active scalars
+  // rendered its point ids as the field when they came first.
+  for (const bool bookkeeping : { false, true })
   {
-    vtkDataArray* a = d->GetArray(i);
-    if (a && a->GetNumberOfComponents() == 1 && (!named || a->GetName()))
+    for (int i = 0; i < d->GetNumberOfArrays(); ++i)
     {
-      return a;
+      vtkDataArray* a = d->GetArray(i);
+      const bool vtks = a && a->GetName() && std::string(a->GetName()).rfind("vtk", 0) == 0;
+      if (a && vtks == bookkeeping && a->GetNumberOfComponents() == 1 && (!named || a->GetName()))
+      {
+        return a;
+      }
     }
   }
   return nullptr;

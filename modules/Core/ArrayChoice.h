@@ -18,7 +18,8 @@ class vtkFieldData;
 namespace art
 {
 /// The array called `name` (null when there is none); without a name the active scalars, else the
-/// first array of one component (with a name, when `named`), else null.
+/// first array of one component (with a name, when `named`) whose name does not start with "vtk"
+/// (VTK's bookkeeping: vtkOriginalPointIds, vtkValidPointMask), else the first such, else null.
 ADAPTIVERTCORE_EXPORT vtkDataArray* ChooseArray(vtkDataSetAttributes* d, const std::string& name, bool named = false);
 /// "a, b, c" over the arrays of every field given ("(unnamed)" for one without a name), or "none".
 ADAPTIVERTCORE_EXPORT std::string ArrayNames(std::initializer_list<vtkFieldData*> fields);

@@ -757,6 +757,42 @@ TEST(TetMesh, ReducedMeshKeepsItsVolumesRange)
   EXPECT_EQ(TetMesh::FromVTK(ug).ScalarRange(1), 2 * own[1]);
 }
 
+// Without active scalars (as ParaView saves a filter's output), the field is the first array that
+// is not VTK's bookkeeping: ParaView's Extract Selection puts vtkOriginalPointIds first, and the
+// point ids were rendered as the field without a word.
+TEST(TetMesh, BookkeepingArraysAreNotTheField)
+{
+  const TetMesh tets = fixtures::GridMesh(2, 2, 2, { 0, 0, 0 }, { 1, 1, 1 }, Linear, 5);
+  vtkNew<vtkUnstructuredGrid> ug;
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkDoubleArray> ids, f;
+  ids->SetName("vtkOriginalPointIds");
+  f->SetName("density");
+  for (std::size_t i = 0; i < tets.NumberOfPoints(); ++i)
+  {
+    const Vec3& p = tets.PointsArray()[i];
+    pts->InsertNextPoint(p.x, p.y, p.z);
+    ids->InsertNextValue(static_cast<double>(i));
+    f->InsertNextValue(tets.Scalars()[i]);
+  }
+  for (std::size_t t = 0; t < tets.NumberOfTets(); ++t)
+  {
+    const vtkIdType c[4] = { tets.Tet(t)[0], tets.Tet(t)[1], tets.Tet(t)[2], tets.Tet(t)[3] };
+    ug->InsertNextCell(VTK_TETRA, 4, c);
+  }
+  ug->SetPoints(pts);
+  ug->GetPointData()->AddArray(ids);
+  ug->GetPointData()->AddArray(f);
+  ASSERT_EQ(ug->GetPointData()->GetScalars(), nullptr);
+  const TetMesh m = TetMesh::FromVTK(ug);
+  for (std::size_t i = 0; i < m.NumberOfPoints(); ++i)
+  {
+    EXPECT_EQ(m.Scalars()[i], tets.Scalars()[i]) << i;
+  }
+  ug->GetPointData()->RemoveArray("density"); // only bookkeeping left: taken as before
+  EXPECT_EQ(TetMesh::FromVTK(ug).ScalarRange(1), double(tets.NumberOfPoints() - 1));
+}
+
 // Points no tet uses (a clip's leftovers, stray points far away, a NaN among them) are dropped:
 // the bounds, and so the framing, are the tets', and the mesh is not refused.
 TEST(TetMesh, UnusedPointsAreDropped)
