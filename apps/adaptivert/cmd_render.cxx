@@ -66,7 +66,7 @@ void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam)
 // renders as it is, and --tets 500 on a mesh drew all its 2347 tets without a word.
 static bool VolumeOnly(const std::string& option)
 {
-  static const std::set<std::string> only = { "tets", "max-error", "refinement", "relocate", "plain-reduction",
+  static const std::set<std::string> only = { "tets", "max-error", "refinement", "relocate", "no-relocate", "plain-reduction",
     "reference" };
   return only.count(option) > 0;
 }
