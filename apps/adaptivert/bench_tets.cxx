@@ -154,6 +154,7 @@ void Declare(cli::Options& o)
   o.Add("tets-size", 0, "WxH", "image size for `bench tets`", "500x500");
   o.Add("tets-tf", 0, "NAME|FILE", "transfer function for `bench tets`", "ct-skin-bone");
   o.Add("tets-plain-reduction", 0, "", "reduce in plain L2, not weighted by the transfer function's opacity");
+  o.Add("tets-no-relocate", 0, "", "keep the reduced vertices on the bisection lattice (render --no-relocate)");
   o.Add("tets-bunyk-max", 0, "N", "largest mesh (tets) given to VTK's Bunyk mapper", "1000000");
   o.Add("tets-no-vtk", 0, "", "skip VTK's mappers (they need a display)");
 }
@@ -224,6 +225,7 @@ int Run(const cli::Options& o)
       art::ReducerOptions ro;
       ro.TargetTets = levels.back();
       ro.Levels = levels;
+      ro.RelocateVertices = !o.Flag("tets-no-relocate"); // as render reduces
       if (!o.Flag("tets-plain-reduction"))
       {
         for (const auto& n : tf.Nodes())
@@ -392,7 +394,8 @@ int Run(const cli::Options& o)
   std::ostringstream md;
   md << "# Tet ray casting: the CT head reduction series (" << W << " x " << H << ")\n\n"
      << in << " (" << dims[0] << " x " << dims[1] << " x " << dims[2] << " voxels), transfer function " << tfName
-     << (o.Flag("tets-plain-reduction") ? " (plain L2 reduction)" : " (reduction weighted by its opacity)")
+     << (o.Flag("tets-plain-reduction") ? " (plain L2 reduction" : " (reduction weighted by its opacity")
+     << (o.Flag("tets-no-relocate") ? ")" : ", vertices relocated)")
      << ", reference: voxel ray caster (trilinear, 2 samples/voxel, exact steps, no ERT; " << refStats.seconds
      << " s). " << cpu << ", " << art::GetThreadCount() << " threads, commit " << commit << ", " << date
      << ". Times: median of " << runs << " runs after a warm-up [min-max]; a mesh's methods are timed in turn, one frame each per round.\n\n"
