@@ -227,7 +227,13 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
       RelocationOptions ro;
       ro.Sweeps = Opt.RelocateSweeps;
       ro.QualityFloor = Opt.RelocateQualityFloor;
-      VertexRelocator::Relocate(moved, volume, y, ro, importance.get());
+      VertexRelocator::Relocate(moved, volume, y, ro, importance.get(), progress);
+      if (progress)
+      {
+        // Back to the reduction's own stage, where it was.
+        progress->Begin("reduce", 1.0);
+        progress->Advance(reported);
+      }
       LeastSquaresFit refit(volume, Opt.Regularization, importance.get());
       std::vector<int> every(static_cast<size_t>(moved.NumberOfTets()));
       std::iota(every.begin(), every.end(), 0);

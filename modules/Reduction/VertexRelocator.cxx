@@ -3,6 +3,7 @@
 #include "Error.h"
 #include "OpacityImportance.h"
 #include "ParallelTiles.h"
+#include "Progress.h"
 #include "VoxelRaster.h"
 
 #include <algorithm>
@@ -577,7 +578,7 @@ private:
 } // namespace
 
 RelocationStats VertexRelocator::Relocate(BisectionMesh& mesh, const VoxelVolume& volume, std::vector<double>& x,
-  const RelocationOptions& options, const OpacityImportance* importance)
+  const RelocationOptions& options, const OpacityImportance* importance, Progress* progress)
 {
   const int nv = mesh.NumberOfVertices();
   if (static_cast<int>(x.size()) != nv)
@@ -621,11 +622,23 @@ RelocationStats VertexRelocator::Relocate(BisectionMesh& mesh, const VoxelVolume
   }
   // Active set: a sweep visits the vertices that moved, or a neighbour of which moved, last sweep.
   std::vector<char> active(static_cast<size_t>(nv), 1), next(static_cast<size_t>(nv), 0), moved(static_cast<size_t>(nv), 0);
+  if (progress)
+  {
+    progress->Begin("relocate", double(options.Sweeps) * nv);
+  }
   for (int sweep = 0; sweep < options.Sweeps; ++sweep)
   {
     long long count = 0;
     for (const auto& cls : classes)
     {
+      if (progress)
+      {
+        if (progress->Cancelled())
+        {
+          throw Error("cancelled");
+        }
+        progress->Advance(double(cls.size()));
+      }
       ForEachRange(static_cast<long long>(cls.size()), 8, [&](long long b, long long e, Counters&) {
         Relocator::Scratch sc;
         for (long long i = b; i < e; ++i)
@@ -658,6 +671,10 @@ RelocationStats VertexRelocator::Relocate(BisectionMesh& mesh, const VoxelVolume
     {
       break;
     }
+  }
+  if (progress)
+  {
+    progress->End();
   }
   s.SseAfter = r.TotalSse();
   return s;

@@ -13,6 +13,7 @@
 namespace art
 {
 class OpacityImportance;
+class Progress;
 
 struct RelocationOptions
 {
@@ -47,8 +48,10 @@ public:
   /// relaxed in parallel (colour classes): the same result for any thread count. With an
   /// `importance` (prepared), errors are OpacityImportance's weighted ones, each voxel weighed
   /// at the fit with the moved vertex's current value. Sse* are then weighted too.
+  /// `progress` (optional) gets a stage "relocate" and may cancel it (art::Error "cancelled").
   static RelocationStats Relocate(BisectionMesh& mesh, const VoxelVolume& volume, std::vector<double>& x,
-    const RelocationOptions& options = {}, const OpacityImportance* importance = nullptr);
+    const RelocationOptions& options = {}, const OpacityImportance* importance = nullptr,
+    Progress* progress = nullptr);
 };
 } // namespace art
 

@@ -144,8 +144,13 @@ int vtkAdaptiveTetReducer::RequestData(
   }
   // Progress is reported from the driver loop (this thread), never from worker threads. An
   // observer's SetAbortExecute(1) cancels the reduction at the next level, as VTK's filters stop.
-  art::Progress progress([this, &progress](double f, const std::string&) {
-    this->UpdateProgress(f);
+  // With relocation the reduction reports its stages in turn (each 0 -> 1): the first half is
+  // the refinement, the second the relocation; VTK's progress only rises.
+  double shown = 0.0;
+  art::Progress progress([this, &progress, &shown, &opt](double f, const std::string& stage) {
+    const double g = !opt.RelocateVertices ? f : (stage == "relocate" ? 0.5 + 0.5 * f : 0.5 * f);
+    shown = std::max(shown, g);
+    this->UpdateProgress(shown);
     if (this->GetAbortExecute())
     {
       progress.Cancel();

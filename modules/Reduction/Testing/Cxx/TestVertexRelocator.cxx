@@ -7,6 +7,7 @@
 #include "DataLoader.h"
 #include "Error.h"
 #include "LeastSquaresFit.h"
+#include "Progress.h"
 #include "ReducerVTK.h"
 #include "ReductionFixtures.h"
 #include "TetReducer.h"
@@ -233,6 +234,48 @@ TEST(VertexRelocator, WeightedByOpacityTheWeightedErrorFalls)
   ASSERT_TRUE(moved.Weighted);
   EXPECT_EQ(moved.NumberOfTets(), plain.NumberOfTets());
   EXPECT_LT(moved.WeightedRms, 0.9 * plain.WeightedRms) << plain.WeightedRms << " -> " << moved.WeightedRms;
+}
+
+TEST(VertexRelocator, ReportsItsProgressAndCanBeCancelled)
+{
+  // Relocation takes several times the reduction: it reports a stage of its own, up to 1, and a
+  // cancel during it stops the run.
+  const int d[3] = { 30, 28, 26 };
+  const double spacing[3] = { 1, 1, 1 }, origin[3] = { 0, 0, 0 };
+  const art::VoxelVolume vol = art::VolumeFromImage(fixtures::Field(d, spacing, origin, [](double x, double y, double z) {
+    const double dx = x - 14.3, dy = y - 13.6, dz = z - 12.2;
+    return dx * dx + dy * dy + dz * dz < 9.3 * 9.3 ? 1000.0 : 0.0;
+  }));
+  art::ReducerOptions opt;
+  opt.TargetTets = 1000;
+  opt.RelocateVertices = true;
+  std::vector<std::pair<std::string, double>> seen;
+  art::Progress p([&](double f, const std::string& stage) { seen.emplace_back(stage, f); });
+  const auto out = art::TetReducer(opt).Run(vol, &p);
+  ASSERT_EQ(out.size(), 1u);
+  double relocated = -1;
+  int relocateReports = 0;
+  for (const auto& [stage, f] : seen)
+  {
+    if (stage == "relocate")
+    {
+      EXPECT_GE(f, relocated);
+      relocated = f;
+      ++relocateReports;
+    }
+  }
+  EXPECT_EQ(relocated, 1.0);
+  EXPECT_GT(relocateReports, 2);
+  EXPECT_EQ(seen.back().first, "reduce") << "the reduction's own stage ends the run";
+  EXPECT_EQ(seen.back().second, 1.0);
+
+  art::Progress cancel([&](double, const std::string& stage) {
+    if (stage == "relocate")
+    {
+      cancel.Cancel();
+    }
+  });
+  EXPECT_THROW(art::TetReducer(opt).Run(vol, &cancel), art::Error);
 }
 
 TEST(VertexRelocator, ScreeningRasterAndSubsampleAgreeWithTheExactRaster)

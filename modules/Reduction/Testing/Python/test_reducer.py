@@ -215,7 +215,12 @@ for relocate in (False, True):
     r.SetTargetTets(300)
     r.SetRelocateVertices(relocate)
     assert r.GetRelocateVertices() == relocate
+    shown = []
+    r.AddObserver(vtkCommand.ProgressEvent, lambda o, e: shown.append(o.GetProgress()))
     r.Update()
+    # The relocation reports too (the second half of the bar), and the progress only rises.
+    assert shown == sorted(shown) and shown[-1] == 1.0, shown
+    assert not relocate or len([f for f in shown if 0.5 < f < 1.0]) >= 2, shown
     assert r.GetOutput().GetBounds() == step.GetBounds()
     reloc.append((r.GetOutput().GetNumberOfCells(), r.GetRMSError()))
 assert reloc[1][0] == reloc[0][0], reloc
