@@ -18,15 +18,12 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
 namespace view
 {
-using Vec3Extent = std::array<double, 3>;
-
 ViewerApp::ViewerApp(ViewerOptions options)
   : Impl(new Internals)
 {
@@ -238,7 +235,7 @@ void ViewerApp::Internals::ResetCamera()
   cam->SetViewUp(0, 0, 1);
   // Flat data (a slab two voxels thick, a single-layer simulation, a floor plan) is seen face on,
   // not edge on: from the front such a slab thin in z or x drew as a line, or nothing at all.
-  const Vec3Extent e = { Scene.Bounds.hi.x - Scene.Bounds.lo.x, Scene.Bounds.hi.y - Scene.Bounds.lo.y,
+  const double e[3] = { Scene.Bounds.hi.x - Scene.Bounds.lo.x, Scene.Bounds.hi.y - Scene.Bounds.lo.y,
     Scene.Bounds.hi.z - Scene.Bounds.lo.z };
   const double widest = std::max({ e[0], e[1], e[2] });
   if (e[2] < 0.05 * widest && e[2] <= e[0])
