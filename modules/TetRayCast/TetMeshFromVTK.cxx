@@ -87,13 +87,15 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
         val[id] = s->GetComponent(id, 0);
       }
   // A voxel's own words (its index) rather than the mesh's "point N has a non-finite ...".
-  const auto bad = std::find_if(val.begin(), val.end(), [](double v) { return !std::isfinite(v); });
+  auto notFinite = [](double v) { return !std::isfinite(v); };
+  const auto bad = std::find_if(val.begin(), val.end(), notFinite);
   if (bad != val.end())
   {
-    const long long id = bad - val.begin(), count = std::count_if(bad, val.end(), [](double v) { return !std::isfinite(v); });
+    const long long id = bad - val.begin(), count = std::count_if(bad, val.end(), notFinite);
     const long long i = id % d[0], j = (id / d[0]) % d[1], k = id / (static_cast<long long>(d[0]) * d[1]);
-    throw Error(std::to_string(count) + " voxel" + (count > 1 ? "s hold" : " holds") + " NaN or infinite values (the first at i, j, k = " +
-        std::to_string(e[0] + i) + ", " + std::to_string(e[2] + j) + ", " + std::to_string(e[4] + k) +
+    throw Error(std::to_string(count) + " voxel" + (count > 1 ? "s hold" : " holds") +
+        " NaN or infinite values (the first at i, j, k = " + std::to_string(e[0] + i) + ", " +
+        std::to_string(e[2] + j) + ", " + std::to_string(e[4] + k) +
         "); rendering needs finite voxels: replace them first, e.g. with numpy.nan_to_num",
       file);
   }
