@@ -28,10 +28,12 @@
 #include <vtkXMLPImageDataReader.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <set>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -240,6 +242,36 @@ void MakeSpacingPositive(vtkImageData* img, const std::string& path)
 
 namespace
 {
+// A folder of 2-D slices (a micro-CT's TIFF or PNG stack) is no volume without its spacing: say
+// what it holds and how to make one, instead of only that no DICOM series is there.
+std::string ImageStackHint(const std::string& folder)
+{
+  static const std::set<std::string> slices = { ".png", ".tif", ".tiff", ".jpg", ".jpeg", ".bmp" };
+  std::error_code ec;
+  long long n = 0;
+  std::string kind;
+  for (const auto& f : fs::directory_iterator(folder, ec))
+  {
+    const std::string e = LowerExtension(f.path().string());
+    if (f.is_regular_file(ec) && slices.count(e))
+    {
+      ++n;
+      kind = e.substr(1);
+    }
+  }
+  if (n == 0)
+  {
+    return "";
+  }
+  for (char& c : kind)
+  {
+    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  }
+  return " but " + std::to_string(n) + " " + kind + " image" + (n > 1 ? "s" : "") +
+    ": a stack of slices is not read as a volume (its spacing is unknown); join it into one file with its spacing "
+    "first (ParaView: open the files as one series, Save Data as .vti; Fiji: Save As NRRD or MetaImage)";
+}
+
 vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const std::string& array);
 }
 
@@ -281,7 +313,7 @@ vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const std
   {
     if (!HasDicomFile(path))
     {
-      throw Error("folder holds no readable DICOM series", path);
+      throw Error("folder holds no readable DICOM series" + ImageStackHint(path), path);
     }
     // vtkDICOMImageReader reads every series in a folder as one: give it one (DicomSeries.h).
     int seriesInFolder = 0;

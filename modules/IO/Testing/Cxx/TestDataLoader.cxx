@@ -167,6 +167,19 @@ TEST(DataLoader, ByteOrderMarks)
   ExpectError(dir + "bom.stl", "starts with a UTF-8 byte-order mark");
 }
 
+// A folder of 2-D slices (a micro-CT's TIFF stack) says what it holds and how to make a volume of
+// it; it said only "folder holds no readable DICOM series".
+TEST(DataLoader, ImageStackFolderIsNamed)
+{
+  const std::string dir = std::string(ART_TEST_OUTPUT) + "/tif-stack";
+  std::filesystem::create_directories(dir);
+  for (const char* name : { "/s0001.tif", "/s0002.tif" })
+  {
+    std::ofstream(dir + name) << "II*";
+  }
+  ExpectError(dir, "folder holds no readable DICOM series but 2 TIF images: a stack of slices is not read as a volume");
+}
+
 TEST(DataLoader, ObjFaceIndicesAreChecked)
 {
   ExpectError(Bad + "texcoord-out-of-range.obj", "line 11: a face refers to texture coordinate 5 of 4 defined");
