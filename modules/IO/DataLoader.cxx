@@ -222,6 +222,13 @@ DataKind KindOf(const std::string& path)
   {
     TimeSeriesError(path);
   }
+  if (e == ".tif" || e == ".tiff" || e == ".png" || e == ".jpg" || e == ".jpeg" || e == ".bmp")
+  {
+    // A multi-page TIFF is how ImageJ and many micro-CT scanners export a volume.
+    throw Error("is a 2-D image or an image stack, not read as a volume (its spacing is unknown): save it as one "
+                "volume file with its spacing first (ParaView: Save Data as .vti; Fiji: Save As NRRD or MetaImage)",
+      path);
+  }
   throw Error("unknown file type '" + (e.empty() ? std::string("(none)") : e) +
       "' (volumes: .mha .mhd .nii .nii.gz .vti .pvti .nrrd or a DICOM folder; surfaces: .ply .obj "
       ".stl .vtp .pvtp; meshes: .vtu .vts .vtr, their parallel .pvtu .pvts .pvtr, .vtm; any of them: legacy .vtk)",

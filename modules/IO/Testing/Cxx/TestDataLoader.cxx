@@ -178,6 +178,8 @@ TEST(DataLoader, ImageStackFolderIsNamed)
     std::ofstream(dir + name) << "II*";
   }
   ExpectError(dir, "folder holds no readable DICOM series but 2 TIF images: a stack of slices is not read as a volume");
+  // One of them, or a multi-page TIFF (ImageJ's volumes): it was an "unknown file type '.tif'".
+  ExpectError(dir + "/s0001.tif", "is a 2-D image or an image stack, not read as a volume (its spacing is unknown)");
 }
 
 TEST(DataLoader, ObjFaceIndicesAreChecked)
