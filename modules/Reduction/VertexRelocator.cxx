@@ -80,7 +80,7 @@ public:
     return s;
   }
 
-  // Per-tet voxel moments (unweighted errors only): count, sum f^2, sum f l_a, sum l_a l_b
+  // Per-tet voxel moments (weighted by W when a transfer function weighs): count, sum f^2, sum f l_a, sum l_a l_b
   // (a <= b, in the order 00 01 02 03 11 12 13 22 23 33). A star's error for any values of its
   // vertices follows from its tets' moments without a voxel pass.
   static constexpr int NM = 16;
@@ -99,14 +99,16 @@ public:
       return;
     }
     Vol.WithSamples([&](const auto* values) {
+      const float* w = W.empty() ? nullptr : W.data();
       r.ForEachVoxel(Vol.Dims, [&](long long idx, const double* l) {
-        const double f = values[idx];
+        const double k = w ? w[idx] : 1.0, f = values[idx], kf = k * f;
+        const double kl[4] = { k * l[0], k * l[1], k * l[2], k * l[3] };
         m[0] += 1;
-        m[1] += f * f;
-        m[2] += f * l[0], m[3] += f * l[1], m[4] += f * l[2], m[5] += f * l[3];
-        m[6] += l[0] * l[0], m[7] += l[0] * l[1], m[8] += l[0] * l[2], m[9] += l[0] * l[3];
-        m[10] += l[1] * l[1], m[11] += l[1] * l[2], m[12] += l[1] * l[3];
-        m[13] += l[2] * l[2], m[14] += l[2] * l[3], m[15] += l[3] * l[3];
+        m[1] += kf * f;
+        m[2] += kf * l[0], m[3] += kf * l[1], m[4] += kf * l[2], m[5] += kf * l[3];
+        m[6] += kl[0] * l[0], m[7] += kl[0] * l[1], m[8] += kl[0] * l[2], m[9] += kl[0] * l[3];
+        m[10] += kl[1] * l[1], m[11] += kl[1] * l[2], m[12] += kl[1] * l[3];
+        m[13] += kl[2] * l[2], m[14] += kl[2] * l[3], m[15] += kl[3] * l[3];
       });
     });
   }
@@ -114,7 +116,29 @@ public:
   {
     if (Imp)
     {
-      return; // weights depend on the fit: weighted errors are summed voxel by voxel
+      // The weights at the fit relocated from (one reweighting step for the whole relocation,
+      // as the refit after it takes): the weighted errors then follow from moments as the plain ones.
+      W.assign(static_cast<size_t>(Vol.Dims[0]) * Vol.Dims[1] * Vol.Dims[2], static_cast<float>(Imp->Floor()));
+      ForEachRange(Mesh.NumberOfTets(), 256, [&](long long t0, long long t1, Counters&) {
+        for (long long t = t0; t < t1; ++t)
+        {
+          LatticePoint P[4];
+          double c[4];
+          for (int a = 0; a < 4; ++a)
+          {
+            P[a] = Mesh.Vertex(Mesh.Tet(static_cast<int>(t))[a]);
+            c[a] = X[Mesh.Tet(static_cast<int>(t))[a]];
+          }
+          TetRaster r;
+          if (r.Setup(P))
+          {
+            r.ForEachVoxel(Vol.Dims, [&](long long idx, const double* l) {
+              const double f = Vol.Value(idx);
+              W[static_cast<size_t>(idx)] = static_cast<float>(Imp->Weight(idx, f, c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3]));
+            });
+          }
+        }
+      });
     }
     Moments.assign(static_cast<size_t>(Mesh.NumberOfTets()) * NM, 0.0);
     ForEachRange(Mesh.NumberOfTets(), 256, [&](long long t0, long long t1, Counters&) {
@@ -334,18 +358,15 @@ public:
     {
       return false;
     }
-    if (!Imp)
+    // The moments of the accepted place: evaluated last or re-evaluated here.
+    double e, value;
+    if (!(bestP.x == sc.LastQ.x && bestP.y == sc.LastQ.y && bestP.z == sc.LastQ.z))
     {
-      // The moments of the accepted place: evaluated last or re-evaluated here.
-      double e, value;
-      if (!(bestP.x == sc.LastQ.x && bestP.y == sc.LastQ.y && bestP.z == sc.LastQ.z))
-      {
-        Evaluate(v, bestP, false, sc, e, value);
-      }
-      for (size_t i = 0; i < Star.size(); ++i)
-      {
-        std::copy_n(&sc.NewMoments[i * NM], NM, &Moments[static_cast<size_t>(Star[i]) * NM]);
-      }
+      Evaluate(v, bestP, false, sc, e, value);
+    }
+    for (size_t i = 0; i < Star.size(); ++i)
+    {
+      std::copy_n(&sc.NewMoments[i * NM], NM, &Moments[static_cast<size_t>(Star[i]) * NM]);
     }
     Mesh.MoveVertex(v, bestP);
     X[v] = bestValue;
@@ -486,7 +507,7 @@ private:
         return false;
       }
     }
-    if (stride <= 0 && !Imp)
+    if (stride <= 0)
     {
       // Exact, from moments: the stored ones at v's place (stride -1), fresh ones elsewhere.
       sc.NewMoments.resize(Star.size() * NM);
@@ -511,7 +532,8 @@ private:
         AddFromMoments(m, c, vi, srr, srp, spp, count);
       }
     }
-    for (size_t i = 0; (stride > 0 || Imp) && i < Star.size(); ++i)
+    // Screening: a floating-point raster of every stride-th voxel per axis.
+    for (size_t i = 0; stride > 0 && i < Star.size(); ++i)
     {
       const int t = Star[i];
       LatticePoint P[4];
@@ -522,40 +544,20 @@ private:
         auto add = [&](long long idx, const double* l) {
           const double res = values[idx] - (c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3]);
           const double phi = l[vi];
-          // Weighted: the weight at the fit with v's current value (one reweighting step).
-          const double w = Imp ? Imp->Weight(idx, values[idx], values[idx] - res + X[v] * phi) : 1.0;
+          const double w = W.empty() ? 1.0 : W[idx];
           srr += w * res * res;
           srp += w * res * phi;
           spp += w * phi * phi;
           ++count;
         };
-        if (stride > 0)
+        ScreenRaster r;
+        if (r.Setup(P, Vol.Dims))
         {
-          ScreenRaster r;
-          if (r.Setup(P, Vol.Dims))
-          {
-            r.ForEachVoxel(Vol.Dims, stride, add);
-          }
-        }
-        else
-        {
-          TetRaster r;
-          if (r.Setup(P))
-          {
-            r.ForEachVoxel(Vol.Dims, add);
-          }
-          else
-          {
-            count = -1LL << 60; // flat: refused below
-          }
+          r.ForEachVoxel(Vol.Dims, stride, add);
         }
       });
     }
     if (!(spp > 1e-12))
-    {
-      return false;
-    }
-    if (count < 0)
     {
       return false;
     }
@@ -574,6 +576,7 @@ private:
   double Spacing[3];
   double Scale2 = 1;
   mutable std::vector<double> Moments; // NM per tet, for the tets' current places
+  std::vector<float> W;                // weighted: each voxel's weight, frozen at the fit relocated from
 };
 } // namespace
 
