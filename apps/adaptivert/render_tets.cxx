@@ -85,8 +85,8 @@ void Declare(cli::Options& o)
 
 // A preset's opacities are per unit distance: 1 mm on CT in HU of mm voxels, else the data's sample spacing;
 // --unit-distance overrides that and a file's own unit-distance line.
-// `points`: a mesh's distinct points (TetMesh), for a preset's unit distance; -1 for a volume.
-art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo, double hi, double points = -1)
+// `mesh`: the tet mesh built from `data` (its used, merged points), for a preset's unit distance.
+art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo, double hi, const art::TetMesh* mesh = nullptr)
 {
   const std::string tf = o.Get("tf");
   art::TransferFunction f;
@@ -96,7 +96,7 @@ art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo,
   }
   else
   {
-    f = art::TransferFunction::PresetFor(tf, data, lo, hi, points);
+    f = art::TransferFunction::PresetFor(tf, data, lo, hi, mesh);
   }
   if (o.Has("unit-distance"))
   {
@@ -289,7 +289,7 @@ int Run(const cli::Options& o, const std::string& input)
     mesh = art::TetMesh::FromVTK(grid, array, &note, input);
     meshLabel = "tet mesh";
     range[0] = mesh.ScalarRange(0), range[1] = mesh.ScalarRange(1);
-    settings = MakeSettings(o, MakeTF(o, grid, range[0], range[1], double(mesh.NumberOfPoints())));
+    settings = MakeSettings(o, MakeTF(o, grid, range[0], range[1], &mesh));
   }
   buildSeconds = Seconds(t0);
   if (settings.isos.empty() && settings.tf.Transparent(range[0], range[1]))

@@ -17,6 +17,7 @@
 #endif
 
 #include <cstdio>
+#include <optional>
 
 namespace view
 {
@@ -52,7 +53,7 @@ void ViewerScene::AddLevel(vtkSmartPointer<vtkUnstructuredGrid> grid, long long 
 ViewerScene LoadScene(const std::string& file, const std::string& tf, const std::string& array)
 {
   ViewerScene s;
-  double points = -1; // a mesh's distinct points, for a preset's unit distance
+  std::optional<art::TetMesh> mesh; // a mesh's used, merged points, for a preset's unit distance
   const art::DataKind kind = art::KindOf(file);
   vtkSmartPointer<vtkDataObject> data =
     kind == art::DataKind::Volume ? vtkSmartPointer<vtkDataObject>(art::LoadVolume(file, array)) : art::Load(file);
@@ -91,18 +92,17 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const std:
     s.ArrayName = art::AddComponentArray(grid, array, file); // NAME:magnitude, NAME:N
     s.ArrayOnCells = !s.ArrayName.empty() && !grid->GetPointData()->GetArray(s.ArrayName.c_str()) &&
       grid->GetCellData()->GetArray(s.ArrayName.c_str());
-    const art::TetMesh mesh = art::TetMesh::FromVTK(grid, s.ArrayName, &note, file); // checks scalars and cells
-    s.Range[0] = mesh.ScalarRange(0);
-    s.Range[1] = mesh.ScalarRange(1);
-    s.Bounds = mesh.Bounds();
-    s.AddLevel(grid, static_cast<long long>(mesh.NumberOfTets()), -1);
+    mesh.emplace(art::TetMesh::FromVTK(grid, s.ArrayName, &note, file)); // checks scalars and cells
+    s.Range[0] = mesh->ScalarRange(0);
+    s.Range[1] = mesh->ScalarRange(1);
+    s.Bounds = mesh->Bounds();
+    s.AddLevel(grid, static_cast<long long>(mesh->NumberOfTets()), -1);
     s.Note = note;
-    points = static_cast<double>(mesh.NumberOfPoints()); // duplicates merged
   }
   // A preset's unit distance follows the data (1 mm on CT in HU of mm voxels, else its sample spacing), as in render.
   s.Transfer = tf.find_first_of("./") != std::string::npos
     ? art::TransferFunction::FromFile(tf)
-    : art::TransferFunction::PresetFor(tf, vtkDataSet::SafeDownCast(data), s.Range[0], s.Range[1], points);
+    : art::TransferFunction::PresetFor(tf, vtkDataSet::SafeDownCast(data), s.Range[0], s.Range[1], mesh ? &*mesh : nullptr);
   return s;
 }
 } // namespace view

@@ -1,5 +1,7 @@
 #include "TransferFunction.h"
 
+#include "TetMesh.h"
+
 #include "Error.h"
 #include "MeanSpacing.h"
 
@@ -221,7 +223,7 @@ double TransferFunction::PresetUnitDistance(double lo, double hi, double h)
   return LooksLikeHU(lo, hi) && h >= 0.1 && h <= 10.0 ? 1.0 : h;
 }
 
-double TransferFunction::SampleSpacing(vtkDataSet* data, double points)
+double TransferFunction::SampleSpacing(vtkDataSet* data, const TetMesh* mesh)
 {
   if (auto* image = vtkImageData::SafeDownCast(data))
   {
@@ -235,16 +237,22 @@ double TransferFunction::SampleSpacing(vtkDataSet* data, double points)
       return h;
     }
   }
+  if (mesh && mesh->NumberOfPoints() > 0)
+  {
+    const Vec3 e = mesh->Bounds().hi - mesh->Bounds().lo;
+    const double extent[3] = { e.x, e.y, e.z };
+    return MeanSpacing(extent, static_cast<double>(mesh->NumberOfPoints()));
+  }
   double b[6];
   data->GetBounds(b);
   const double extent[3] = { b[1] - b[0], b[3] - b[2], b[5] - b[4] };
-  return MeanSpacing(extent, points > 0 ? points : static_cast<double>(data->GetNumberOfPoints()));
+  return MeanSpacing(extent, static_cast<double>(data->GetNumberOfPoints()));
 }
 
 TransferFunction TransferFunction::PresetFor(const std::string& name, vtkDataSet* data, double lo, double hi,
-  double points)
+  const TetMesh* mesh)
 {
-  return Preset(name, lo, hi, PresetUnitDistance(lo, hi, SampleSpacing(data, points)));
+  return Preset(name, lo, hi, PresetUnitDistance(lo, hi, SampleSpacing(data, mesh)));
 }
 
 TransferFunction TransferFunction::Preset(const std::string& name, double lo, double hi, double unitDistance)

@@ -23,6 +23,7 @@ class vtkVolumeProperty;
 
 namespace art
 {
+class TetMesh;
 class ADAPTIVERTTETRAYCAST_EXPORT TransferFunction
 {
 public:
@@ -57,13 +58,14 @@ public:
   static double PresetUnitDistance(double lo, double hi, double h);
   /// Mean sample spacing of a data set: an image's geometric mean spacing over its axes of more
   /// than one sample; for other data the field "source_spacing" (which the reducer writes, so a
-  /// reduced mesh renders as its volume did), else art::MeanSpacing of its bounds and points:
-  /// `points` distinct ones when given (TetMesh::FromVTK merges a mesh's duplicate points, so the
-  /// same mesh gets the same spacing whether or not its cells share their points).
-  static double SampleSpacing(vtkDataSet* data, double points = -1);
-  /// Preset with the unit distance PresetUnitDistance gives for `data` and its range [lo, hi].
+  /// reduced mesh renders as its volume did), else art::MeanSpacing of the bounds and number of
+  /// the points of `mesh` when given (TetMesh::FromVTK merges duplicate points and leaves out
+  /// those no cell uses, so the same cells get the same spacing however their points are
+  /// stored), else of the data set's own.
+  static double SampleSpacing(vtkDataSet* data, const TetMesh* mesh = nullptr);
+  /// Preset with the unit distance PresetUnitDistance gives for `data` (built into `mesh`) and its range [lo, hi].
   static TransferFunction PresetFor(const std::string& name, vtkDataSet* data, double lo, double hi,
-    double points = -1);
+    const TetMesh* mesh = nullptr);
   /// A text file, one node per line: "scalar r g b opacity" ('#' comments; optional first line
   /// "unit-distance U"), or a ParaView preset as its "Export" writes it (JSON: "RGBPoints",
   /// "ColorSpace", "Points" for the opacity, else a ramp from 0 to 1 over the colour points).

@@ -593,9 +593,17 @@ TEST(TetMesh, DuplicatePointsAreMerged)
   EXPECT_EQ(m.BoundaryFaces().size(), shared.BoundaryFaces().size());
   // A preset's unit distance counts the merged points, as for the mesh with shared points.
   const double spacing = std::cbrt(3.0 * 2.0 * 2.0 / double(shared.PointsArray().size()));
-  EXPECT_NEAR(TransferFunction::SampleSpacing(ug, double(m.NumberOfPoints())), spacing, 1e-12);
+  EXPECT_NEAR(TransferFunction::SampleSpacing(ug, &m), spacing, 1e-12);
   EXPECT_NEAR(TransferFunction::SampleSpacing(ug), std::cbrt(12.0 / double(4 * shared.NumberOfTets())), 1e-12)
-    << "without the count, every cell's own points";
+    << "without the mesh, every cell's own points";
+  // Points no cell uses (far away) change neither the mesh's bounds nor its count.
+  for (int k = 0; k < 5; ++k)
+  {
+    pts->InsertNextPoint(100.0 + k, 0, 0);
+    f->InsertNextValue(0.0);
+  }
+  const TetMesh withUnused = TetMesh::FromVTK(ug, {}, nullptr);
+  EXPECT_NEAR(TransferFunction::SampleSpacing(ug, &withUnused), spacing, 1e-12);
   EXPECT_TRUE(m.IsConvex());
   RenderSettings s;
   s.tf = LinearTF(shared.ScalarRange(0), shared.ScalarRange(1));
