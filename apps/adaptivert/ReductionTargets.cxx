@@ -45,4 +45,24 @@ bool ParseEdgeRefinement(const std::string& s, const std::string& what)
   }
   return s == "edge";
 }
+
+std::string UnreachedReason(bool reached, bool tetBudget, bool errorBoundAlone, long long tets, double maxError,
+  double magnitude, long long voxels, long long finest)
+{
+  if (reached)
+  {
+    return "";
+  }
+  if (tetBudget)
+  {
+    // A constant or linear volume is matched to round-off long before the voxels' resolution.
+    return maxError <= 1e-9 * magnitude ? "tet budget not reached: the fit is exact, no tet has an error left to refine"
+                                        : "tet budget not reached: no finer tets than the voxels allow";
+  }
+  // An error bound alone refines up to one tet per voxel (TetReducer's cap), not to the finest
+  // tets the voxels allow (5 per voxel cell).
+  return errorBoundAlone && tets >= voxels && tets < finest
+    ? "error bound not reached by one tet per voxel, where an error bound alone stops; --tets N lets it go on"
+    : "error bound not reached: no finer tets than the voxels allow";
+}
 } // namespace cli

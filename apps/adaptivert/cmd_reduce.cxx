@@ -171,16 +171,8 @@ int Run(const cli::Options& o)
   const bool asDouble = volume.DoubleValues;
   const double range = volume.Range[1] - volume.Range[0];
   const double pct = range > 0 ? 100.0 / range : 0.0;
-  // A constant or linear volume is matched to round-off long before the voxels' resolution: the
-  // reduction stops there, which is no lack of voxels.
   const double magnitude = std::max({ std::fabs(volume.Range[0]), std::fabs(volume.Range[1]), range, 1e-300 });
-  auto exact = [&](const art::ReducedMesh& m) { return m.Max <= 1e-9 * magnitude; };
-  // An error bound without --tets refines up to one tet per voxel (TetReducer's cap), not to the
-  // finest tets the voxels allow (5 per voxel cell): saying the voxels stopped it was wrong.
   const long long finest = 5LL * (volume.Dims[0] - 1) * (volume.Dims[1] - 1) * (volume.Dims[2] - 1);
-  auto atVoxelCount = [&](const art::ReducedMesh& m) {
-    return opt.TargetTets == 0 && m.NumberOfTets() >= voxels && m.NumberOfTets() < finest;
-  };
   std::vector<cli::Json> levels;
   const std::filesystem::path op(outPath);
   for (size_t i = 0; i < meshes.size(); ++i)
@@ -207,11 +199,8 @@ int Run(const cli::Options& o)
         last ? "output" : "level", file.c_str(), Grouped(m.NumberOfTets()).c_str(),
         Grouped(m.NumberOfVertices()).c_str(), m.Rms, m.Rms * pct, m.Max, m.Max * pct, m.BuildSeconds,
         m.TargetReached ? ""
-        : m.TargetTets > 0 ? (exact(m) ? " (tet budget not reached: the fit is exact, no tet has an error left to refine)"
-                                       : " (tet budget not reached: no finer tets than the voxels allow)")
-                           : (atVoxelCount(m) ? " (error bound not reached by one tet per voxel, where an error bound "
-                                                "alone stops; --tets N lets it go on)"
-                                              : " (error bound not reached: no finer tets than the voxels allow)"));
+                        : (" (" + cli::UnreachedReason(false, m.TargetTets > 0, opt.TargetTets == 0, m.NumberOfTets(),
+                                    m.Max, magnitude, voxels, finest) + ")").c_str());
     }
   }
   // With --max-error the run may stop before a level's budget: say which files were not written.
