@@ -409,6 +409,14 @@ TransferFunction TransferFunction::FromFile(const std::string& path)
   {
     throw Error("cannot open transfer-function file", path);
   }
+  // A byte-order mark (Notepad's UTF-8) is skipped.
+  char bom[3] = { 0, 0, 0 };
+  in.read(bom, 3);
+  if (!(in.gcount() == 3 && bom[0] == '\xEF' && bom[1] == '\xBB' && bom[2] == '\xBF'))
+  {
+    in.clear();
+    in.seekg(0);
+  }
   // A ParaView preset starts with '[' or '{'; our own format with a number or a comment.
   in >> std::ws;
   if (in.peek() == '[' || in.peek() == '{')
@@ -424,6 +432,14 @@ TransferFunction TransferFunction::FromFile(const std::string& path)
     if (hash != std::string::npos)
     {
       line.erase(hash);
+    }
+    // Values may be separated by commas too (a spreadsheet's CSV); a first line without any digit
+    // is its header.
+    std::replace(line.begin(), line.end(), ',', ' ');
+    if (nodes.empty() && line.find_first_of("0123456789") == std::string::npos &&
+      line.find_first_not_of(" \t\r") != std::string::npos && line.find("unit-distance") == std::string::npos)
+    {
+      continue;
     }
     std::istringstream ss(line);
     std::string first;
@@ -444,7 +460,8 @@ TransferFunction TransferFunction::FromFile(const std::string& path)
     std::string extra;
     if (!(all >> n.s >> n.rgb[0] >> n.rgb[1] >> n.rgb[2] >> n.alpha) || (all >> extra))
     {
-      throw Error("line " + std::to_string(no) + ": expected 'scalar r g b opacity'", path);
+      throw Error("line " + std::to_string(no) + ": expected 'scalar r g b opacity' (five numbers, separated by "
+        "spaces or commas), got '" + line.substr(0, 60) + "'", path);
     }
     for (double c : { n.rgb[0], n.rgb[1], n.rgb[2], n.alpha })
     {

@@ -330,6 +330,18 @@ TEST(TransferFunction, FileAndPresetErrors)
   {
     EXPECT_NE(std::string(e.what()).find("line 2"), std::string::npos) << e.what();
   }
+  // Notepad's byte-order mark, a spreadsheet's CSV (commas, a header line, CRLF): the same nodes.
+  const std::string csv = dir + "/tf-csv.txt", json = dir + "/tf-bom.json";
+  std::ofstream(csv) << "\xEF\xBB\xBFscalar,r,g,b,opacity\r\n-1000,0,0,0,0\r\n0,1,0.5,0.5,0.2\r\n1000,1,1,1,0.9\r\n";
+  const TransferFunction fromCsv = TransferFunction::FromFile(csv);
+  ASSERT_EQ(fromCsv.Nodes().size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i)
+  {
+    EXPECT_EQ(fromCsv.Nodes()[i].s, tf.Nodes()[i].s);
+    EXPECT_EQ(fromCsv.Nodes()[i].alpha, tf.Nodes()[i].alpha);
+  }
+  std::ofstream(json) << "\xEF\xBB\xBF{ \"RGBPoints\" : [ 0, 0, 0, 0, 10, 1, 1, 1 ] }";
+  EXPECT_EQ(TransferFunction::FromFile(json).Nodes().size(), 2u);
   EXPECT_THROW(TransferFunction::FromFile(dir + "/no-such-tf.txt"), Error);
   EXPECT_THROW(TransferFunction::Preset("rainbow", 0, 1), Error);
   for (const auto& name : TransferFunction::PresetNames())
