@@ -55,9 +55,7 @@ static double Zoom(const Options& o)
 
 void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam)
 {
-  cam->SetPosition(0, -1, 0);
-  cam->SetFocalPoint(0, 0, 0);
-  cam->SetViewUp(0, 0, 1);
+  art::Camera::DefaultView(cam, bounds);
   cam->SetParallelProjection(o.Flag("parallel"));
   art::Camera::Frame(cam, bounds, o.GetDouble("azimuth"), o.GetDouble("elevation"), Zoom(o));
 }

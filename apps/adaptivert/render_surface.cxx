@@ -178,7 +178,8 @@ int Run(const cli::Options& o, const std::string& input)
   progress.End();
   bar.Finish();
   // An image of background only exits 0 like any other: say why when we can. A flat scene (a
-  // floor plan, a terrain tile in z = 0) is seen edge-on from the default front view.
+  // floor plan, a terrain tile in z = 0) is seen face on by default (Camera::DefaultView), edge
+  // on when --azimuth or --elevation turn it so.
   long long covered = 0;
   for (std::size_t i = 3; i < img.Pixels().size(); i += 4)
   {
@@ -195,9 +196,8 @@ int Run(const cli::Options& o, const std::string& input)
     {
       flat = (ext[a] <= 1e-6 * Length(e) && std::abs(dir[a]) < 1e-6) ? a : flat;
     }
-    const char* hint[3] = { "--azimuth 90 looks at it", "--azimuth 90 looks at it", "--elevation 90 looks from above" };
-    note = flat >= 0 ? std::string("no surface is in view: the scene is flat in ") + "xyz"[flat] + " and seen edge-on (" +
-        hint[flat] + ")"
+    note = flat >= 0 ? std::string("no surface is in view: the scene is flat in ") + "xyz"[flat] +
+        " and seen edge-on (the default view, without --azimuth and --elevation, looks at it face on)"
                      : std::string("no surface is in view (the image is background only)");
   }
   img.CompositeOver({ view.background[0], view.background[1], view.background[2] });

@@ -230,23 +230,7 @@ void ViewerApp::Internals::SetupWindow()
 void ViewerApp::Internals::ResetCamera()
 {
   vtkCamera* cam = Ren->GetActiveCamera();
-  cam->SetPosition(0, -1, 0); // the CLI's default view: from the front, z up
-  cam->SetFocalPoint(0, 0, 0);
-  cam->SetViewUp(0, 0, 1);
-  // Flat data (a slab two voxels thick, a single-layer simulation, a floor plan) is seen face on,
-  // not edge on: from the front such a slab thin in z or x drew as a line, or nothing at all.
-  const double e[3] = { Scene.Bounds.hi.x - Scene.Bounds.lo.x, Scene.Bounds.hi.y - Scene.Bounds.lo.y,
-    Scene.Bounds.hi.z - Scene.Bounds.lo.z };
-  const double widest = std::max({ e[0], e[1], e[2] });
-  if (e[2] < 0.05 * widest && e[2] <= e[0])
-  {
-    cam->SetPosition(0, 0, 1); // from above, y up (ParaView's default view)
-    cam->SetViewUp(0, 1, 0);
-  }
-  else if (e[0] < 0.05 * widest && e[0] < e[1])
-  {
-    cam->SetPosition(-1, 0, 0); // from the side, z up
-  }
+  art::Camera::DefaultView(cam, Scene.Bounds); // the CLI's, flat data face on
   art::Camera::Frame(cam, Scene.Bounds);
   double b[6] = { Scene.Bounds.lo.x, Scene.Bounds.hi.x, Scene.Bounds.lo.y, Scene.Bounds.hi.y, Scene.Bounds.lo.z,
     Scene.Bounds.hi.z };

@@ -43,6 +43,23 @@ Camera Camera::FromVTK(vtkCamera* cam, int width, int height)
   return c;
 }
 
+void Camera::DefaultView(vtkCamera* cam, const Box3& bounds)
+{
+  const Vec3 e = bounds.hi - bounds.lo;
+  const double widest = std::max({ e.x, e.y, e.z });
+  cam->SetFocalPoint(0, 0, 0);
+  if (e.z < 0.05 * widest && e.z <= e.x)
+  {
+    cam->SetPosition(0, 0, 1);
+    cam->SetViewUp(0, 1, 0);
+  }
+  else
+  {
+    cam->SetPosition(e.x < 0.05 * widest && e.x < e.y ? -1 : 0, e.x < 0.05 * widest && e.x < e.y ? 0 : -1, 0);
+    cam->SetViewUp(0, 0, 1);
+  }
+}
+
 void Camera::Frame(vtkCamera* cam, const Box3& b, double azimuth, double elevation, double zoom)
 {
   // A non-finite angle turns every ray into NaN: an image of nothing, or a crash in a caster.

@@ -24,6 +24,10 @@ public:
   /// then applies azimuth and elevation (degrees) about the focal point and a zoom factor.
   static void Frame(vtkCamera* cam, const Box3& bounds, double azimuth = 0.0,
     double elevation = 0.0, double zoom = 1.0);
+  /// The default view direction of the CLI and the viewer, before Frame: from the front (-y), z
+  /// up; flat data (thinner than 1/20 of its width in z, or in x) face on: from above with y up
+  /// (ParaView's default view), or from the side. Edge on, a slab drew as a line or nothing.
+  static void DefaultView(vtkCamera* cam, const Box3& bounds);
 
   /// The ray through the centre of pixel (px, py); fractional positions give sub-pixel rays.
   Ray Generate(double px, double py) const;

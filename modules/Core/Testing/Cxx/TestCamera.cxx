@@ -89,3 +89,24 @@ TEST(Camera, FrameRefusesNonFiniteAnglesAndZoom)
   EXPECT_THROW(art::Camera::Frame(vc, box, 0, 0, 0), art::Error);
   EXPECT_NO_THROW(art::Camera::Frame(vc, box, 720, -45, 3));
 }
+
+TEST(Camera, DefaultViewSeesFlatDataFaceOn)
+{
+  // From the front, z up; a slab thin in z from above (y up), one thin in x from the side.
+  auto view = [](art::Vec3 hi, double* pos, double* up) {
+    vtkNew<vtkCamera> c;
+    art::Camera::DefaultView(c, art::Box3{ art::Vec3(0, 0, 0), hi });
+    c->GetPosition(pos);
+    c->GetViewUp(up);
+  };
+  double p[3], u[3];
+  view(art::Vec3(10, 12, 8), p, u);
+  EXPECT_EQ(p[1], -1);
+  EXPECT_EQ(u[2], 1);
+  view(art::Vec3(31, 31, 1), p, u);
+  EXPECT_EQ(p[2], 1);
+  EXPECT_EQ(u[1], 1);
+  view(art::Vec3(0.5, 20, 30), p, u);
+  EXPECT_EQ(p[0], -1);
+  EXPECT_EQ(u[2], 1);
+}
