@@ -46,23 +46,33 @@ bool ParseEdgeRefinement(const std::string& s, const std::string& what)
   return s == "edge";
 }
 
-std::string UnreachedReason(bool reached, bool tetBudget, bool errorBoundAlone, long long tets, double maxError,
-  double magnitude, long long voxels, long long finest)
+} // namespace cli
+
+#ifdef ART_HAVE_Reduction
+#include <algorithm>
+
+namespace cli
 {
-  if (reached)
+std::string UnreachedReason(const art::ReducedMesh& m, const art::VoxelVolume& v, bool errorBoundAlone)
+{
+  if (m.TargetReached)
   {
     return "";
   }
-  if (tetBudget)
+  if (m.TargetTets > 0)
   {
     // A constant or linear volume is matched to round-off long before the voxels' resolution.
-    return maxError <= 1e-9 * magnitude ? "tet budget not reached: the fit is exact, no tet has an error left to refine"
-                                        : "tet budget not reached: no finer tets than the voxels allow";
+    const double range = v.Range[1] - v.Range[0];
+    const double magnitude = std::max({ std::fabs(v.Range[0]), std::fabs(v.Range[1]), range, 1e-300 });
+    return m.Max <= 1e-9 * magnitude ? "tet budget not reached: the fit is exact, no tet has an error left to refine"
+                                     : "tet budget not reached: no finer tets than the voxels allow";
   }
   // An error bound alone refines up to one tet per voxel (TetReducer's cap), not to the finest
   // tets the voxels allow (5 per voxel cell).
-  return errorBoundAlone && tets >= voxels && tets < finest
+  const long long finest = 5LL * (v.Dims[0] - 1) * (v.Dims[1] - 1) * (v.Dims[2] - 1);
+  return errorBoundAlone && m.NumberOfTets() >= v.NumberOfVoxels() && m.NumberOfTets() < finest
     ? "error bound not reached by one tet per voxel, where an error bound alone stops; --tets N lets it go on"
     : "error bound not reached: no finer tets than the voxels allow";
 }
 } // namespace cli
+#endif

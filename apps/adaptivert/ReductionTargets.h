@@ -15,12 +15,19 @@ double ParseMaxError(const std::string& s, bool& relative);
 /// "edge" -> true (error-driven edge splits), "bisection" -> false; throws UsageError naming
 /// `what` (the option) otherwise.
 bool ParseEdgeRefinement(const std::string& s, const std::string& what);
-/// Why a reduction stopped short of its target ("" when it reached it): the fit is exact, the
-/// voxels allow no finer tets, or an error bound alone (no --tets) stops at one tet per voxel.
-/// `tetBudget`: the level had a tet budget; `magnitude`: the volume's largest |value| (or range);
-/// `voxels`, `finest`: its voxel count and the tets of its full-resolution tetrahedrisation.
-std::string UnreachedReason(bool reached, bool tetBudget, bool errorBoundAlone, long long tets, double maxError,
-  double magnitude, long long voxels, long long finest);
 }
+
+#ifdef ART_HAVE_Reduction
+#include "TetReducer.h"
+#include "VoxelVolume.h"
+
+namespace cli
+{
+/// Why the reduction of `v` stopped short of level m's target ("" when it reached it): the fit is
+/// exact, the voxels allow no finer tets, or an error bound alone (no --tets) stops at one tet
+/// per voxel.
+std::string UnreachedReason(const art::ReducedMesh& m, const art::VoxelVolume& v, bool errorBoundAlone);
+}
+#endif
 
 #endif

@@ -171,8 +171,6 @@ int Run(const cli::Options& o)
   const bool asDouble = volume.DoubleValues;
   const double range = volume.Range[1] - volume.Range[0];
   const double pct = range > 0 ? 100.0 / range : 0.0;
-  const double magnitude = std::max({ std::fabs(volume.Range[0]), std::fabs(volume.Range[1]), range, 1e-300 });
-  const long long finest = 5LL * (volume.Dims[0] - 1) * (volume.Dims[1] - 1) * (volume.Dims[2] - 1);
   std::vector<cli::Json> levels;
   const std::filesystem::path op(outPath);
   for (size_t i = 0; i < meshes.size(); ++i)
@@ -198,9 +196,7 @@ int Run(const cli::Options& o)
       std::printf("%-12s %s: %s tets, %s vertices, RMS %.4g (%.3f%% of range), max %.4g (%.2f%%), %.2f s%s\n",
         last ? "output" : "level", file.c_str(), Grouped(m.NumberOfTets()).c_str(),
         Grouped(m.NumberOfVertices()).c_str(), m.Rms, m.Rms * pct, m.Max, m.Max * pct, m.BuildSeconds,
-        m.TargetReached ? ""
-                        : (" (" + cli::UnreachedReason(false, m.TargetTets > 0, opt.TargetTets == 0, m.NumberOfTets(),
-                                    m.Max, magnitude, voxels, finest) + ")").c_str());
+        m.TargetReached ? "" : (" (" + cli::UnreachedReason(m, volume, opt.TargetTets == 0) + ")").c_str());
     }
   }
   // With --max-error the run may stop before a level's budget: say which files were not written.

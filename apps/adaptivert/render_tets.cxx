@@ -264,11 +264,7 @@ int Run(const cli::Options& o, const std::string& input)
         {
           ss << "; weighted RMS " << r.WeightedRms << ", max " << r.WeightedMax;
         }
-        const double magnitude = std::max({ std::fabs(vv.Range[0]), std::fabs(vv.Range[1]), vv.Range[1] - vv.Range[0], 1e-300 });
-        const long long finest = 5LL * (vv.Dims[0] - 1) * (vv.Dims[1] - 1) * (vv.Dims[2] - 1);
-        ss << (r.TargetReached ? ")"
-                               : "; " + cli::UnreachedReason(false, r.TargetTets > 0, ro.TargetTets == 0, r.NumberOfTets(), r.Max,
-                                          magnitude, voxels, finest) + ")");
+        ss << (r.TargetReached ? ")" : "; " + cli::UnreachedReason(r, vv, ro.TargetTets == 0) + ")");
         meshLabel = ss.str();
         j.Set("reduced_rms", r.Rms).Set("reduced_max", r.Max).Set("reduced_weighted", r.Weighted);
         if (r.Weighted)

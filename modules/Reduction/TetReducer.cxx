@@ -304,7 +304,9 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     // max needs a pass over the voxels.
     // An error bound holds for the values output, clamped or capped (a few percent above the fit's).
     const bool clamped = Opt.ClampToVoxels || opacityCap;
-    auto outputErrors = [&]() { return fit.VoxelErrors(mesh, clamped ? OutputValues(mesh, fit, x, Opt.ClampToVoxels, opacityCap) : x); };
+    auto outputErrors = [&]() {
+      return fit.VoxelErrors(mesh, clamped ? OutputValues(mesh, fit, x, Opt.ClampToVoxels, opacityCap) : x);
+    };
     double global;
     if (maxMetric && haveError)
     {

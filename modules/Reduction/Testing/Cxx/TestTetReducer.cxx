@@ -163,15 +163,19 @@ TEST(TetReducer, ThickSlicesDoNotStopTheRefinement)
   EXPECT_LT(a.Rms, 3.2 * b.Rms) << a.Rms << " against " << b.Rms;
 }
 
-TEST(TetReducer, ClampToVoxelsRemovesTheOvershootAtAJump)
+// A ball of 100 in air of 0 on a 24^3 grid: the least-squares fit overshoots on both sides of the jump.
+static art::VoxelVolume BallInAir()
 {
-  // A ball of 100 in air of 0: the least-squares fit overshoots on both sides of the jump.
   const int d[3] = { 24, 24, 24 };
   const double sp[3] = { 1, 1, 1 }, o[3] = { 0, 0, 0 };
-  auto img = Field(d, sp, o, [](double x, double y, double z) {
+  return art::VolumeFromImage(Field(d, sp, o, [](double x, double y, double z) {
     return (x - 11.3) * (x - 11.3) + (y - 12.1) * (y - 12.1) + (z - 11.7) * (z - 11.7) < 49 ? 100.0 : 0.0;
-  });
-  const auto vol = art::VolumeFromImage(img);
+  }));
+}
+
+TEST(TetReducer, ClampToVoxelsRemovesTheOvershootAtAJump)
+{
+  const auto vol = BallInAir();
   art::ReducerOptions opt;
   opt.TargetTets = 3000;
   const art::ReducedMesh plain = art::TetReducer(opt).Run(vol).back();
@@ -203,7 +207,7 @@ TEST(TetReducer, ClampToVoxelsRemovesTheOvershootAtAJump)
       for (int j = static_cast<int>(std::ceil(box[v][2])); j <= box[v][3]; ++j)
         for (int i = static_cast<int>(std::ceil(box[v][0])); i <= box[v][1]; ++i)
         {
-          const double f = vol.Value(i + d[0] * (j + d[1] * static_cast<long long>(k)));
+          const double f = vol.Value(i + vol.Dims[0] * (j + vol.Dims[1] * static_cast<long long>(k)));
           lo = std::min(lo, f);
           hi = std::max(hi, f);
         }
@@ -220,14 +224,9 @@ TEST(TetReducer, ClampToVoxelsRemovesTheOvershootAtAJump)
 
 TEST(TetReducer, CapOpacityClampsOnlyTheOvershootThatShowsMoreOpacity)
 {
-  // The ball of the test above, reduced for a transfer function: a value past its voxels' range
-  // is clamped only on the side where the opacity is higher than theirs.
-  const int d[3] = { 24, 24, 24 };
-  const double sp[3] = { 1, 1, 1 }, o[3] = { 0, 0, 0 };
-  auto img = Field(d, sp, o, [](double x, double y, double z) {
-    return (x - 11.3) * (x - 11.3) + (y - 12.1) * (y - 12.1) + (z - 11.7) * (z - 11.7) < 49 ? 100.0 : 0.0;
-  });
-  const auto vol = art::VolumeFromImage(img);
+  // The ball, reduced for a transfer function: a value past its voxels' range is clamped only on
+  // the side where the opacity is higher than theirs.
+  const auto vol = BallInAir();
   for (const bool rising : { true, false })
   {
     art::ReducerOptions opt;

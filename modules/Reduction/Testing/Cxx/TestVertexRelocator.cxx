@@ -215,15 +215,21 @@ TEST(VertexRelocator, ReducerOptionIsDeterministicValidAndLowersTheError)
   }
 }
 
-TEST(VertexRelocator, WeightedByOpacityTheWeightedErrorFalls)
+// A ball of 1000 in 0 on a 30 x 28 x 26 grid, off the voxel centres.
+static art::VoxelVolume Ball()
 {
-  // A ball whose surface is what the opacity ramp (400..600) shows.
   const int d[3] = { 30, 28, 26 };
   const double spacing[3] = { 1, 1, 1 }, origin[3] = { 0, 0, 0 };
-  const art::VoxelVolume vol = art::VolumeFromImage(fixtures::Field(d, spacing, origin, [](double x, double y, double z) {
+  return art::VolumeFromImage(fixtures::Field(d, spacing, origin, [](double x, double y, double z) {
     const double dx = x - 14.3, dy = y - 13.6, dz = z - 12.2;
     return dx * dx + dy * dy + dz * dz < 9.3 * 9.3 ? 1000.0 : 0.0;
   }));
+}
+
+TEST(VertexRelocator, WeightedByOpacityTheWeightedErrorFalls)
+{
+  // A ball whose surface is what the opacity ramp (400..600) shows.
+  const art::VoxelVolume vol = Ball();
   art::ReducerOptions opt;
   opt.TargetTets = 1000;
   opt.ScalarOpacity = { { 0, 0 }, { 400, 0 }, { 600, 0.8 }, { 1000, 0.8 } };
@@ -240,12 +246,7 @@ TEST(VertexRelocator, ReportsItsProgressAndCanBeCancelled)
 {
   // Relocation takes several times the reduction: it reports a stage of its own, up to 1, and a
   // cancel during it stops the run.
-  const int d[3] = { 30, 28, 26 };
-  const double spacing[3] = { 1, 1, 1 }, origin[3] = { 0, 0, 0 };
-  const art::VoxelVolume vol = art::VolumeFromImage(fixtures::Field(d, spacing, origin, [](double x, double y, double z) {
-    const double dx = x - 14.3, dy = y - 13.6, dz = z - 12.2;
-    return dx * dx + dy * dy + dz * dz < 9.3 * 9.3 ? 1000.0 : 0.0;
-  }));
+  const art::VoxelVolume vol = Ball();
   art::ReducerOptions opt;
   opt.TargetTets = 1000;
   opt.RelocateVertices = true;
