@@ -55,7 +55,8 @@ void Camera::DefaultView(vtkCamera* cam, const Box3& bounds)
   }
   else
   {
-    cam->SetPosition(e.x < 0.05 * widest && e.x < e.y ? -1 : 0, e.x < 0.05 * widest && e.x < e.y ? 0 : -1, 0);
+    const bool thinX = e.x < 0.05 * widest && e.x < e.y;
+    cam->SetPosition(thinX ? -1 : 0, thinX ? 0 : -1, 0);
     cam->SetViewUp(0, 0, 1);
   }
 }

@@ -80,7 +80,7 @@ public:
     return s;
   }
 
-  // Per-tet voxel moments (weighted by W when a transfer function weighs): count, sum f^2, sum f l_a, sum l_a l_b
+  // Per-tet voxel moments, weighted by W when a transfer function weighs: count, sum f^2, sum f l_a, sum l_a l_b
   // (a <= b, in the order 00 01 02 03 11 12 13 22 23 33). A star's error for any values of its
   // vertices follows from its tets' moments without a voxel pass.
   static constexpr int NM = 16;
@@ -133,8 +133,8 @@ public:
           if (r.Setup(P))
           {
             r.ForEachVoxel(Vol.Dims, [&](long long idx, const double* l) {
-              const double f = Vol.Value(idx);
-              W[static_cast<size_t>(idx)] = static_cast<float>(Imp->Weight(idx, f, c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3]));
+              const double fit = c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3];
+              W[static_cast<size_t>(idx)] = static_cast<float>(Imp->Weight(idx, Vol.Value(idx), fit));
             });
           }
         }

@@ -433,8 +433,8 @@ TransferFunction TransferFunction::FromFile(const std::string& path)
     {
       line.erase(hash);
     }
-    // Values may be separated by commas too (a spreadsheet's CSV); a first line without any digit
-    // is its header.
+    // Values may be separated by commas too (a spreadsheet's CSV); a line without any digit before
+    // the first node is its header.
     std::replace(line.begin(), line.end(), ',', ' ');
     if (nodes.empty() && line.find_first_of("0123456789") == std::string::npos &&
       line.find_first_not_of(" \t\r") != std::string::npos && line.find("unit-distance") == std::string::npos)
