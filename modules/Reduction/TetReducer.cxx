@@ -14,6 +14,7 @@
 #include <memory>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 namespace art
 {
@@ -75,12 +76,11 @@ std::vector<double> OutputValues(const BisectionMesh& mesh, const LeastSquaresFi
   return x;
 }
 
-ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const LeastSquaresFit& fit,
-  const std::vector<double>& fitted, bool clamp, const OpacityImportance* cap)
+// The output values x of `mesh` and their errors e (LeastSquaresFit::VoxelErrors) as a level.
+ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const std::vector<double>& x,
+  VoxelErrorReport e)
 {
   ReducedMesh out;
-  const std::vector<double> x = OutputValues(mesh, fit, fitted, clamp, cap);
-  VoxelErrorReport e = fit.VoxelErrors(mesh, x);
   out.TetRms = std::move(e.TetRms);
   out.TetMax = std::move(e.TetMax);
   out.Rms = e.Rms;
@@ -220,6 +220,15 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     }
   };
 
+  // The output values of the lattice mesh and their errors, kept from an error check at this
+  // level for the level it emits (two voxel passes otherwise done again).
+  std::optional<std::pair<std::vector<double>, VoxelErrorReport>> checked;
+  auto outputErrors = [&]() -> VoxelErrorReport& {
+    std::vector<double> y = OutputValues(mesh, fit, x, Opt.ClampToVoxels, opacityCap);
+    VoxelErrorReport e = fit.VoxelErrors(mesh, y);
+    checked.emplace(std::move(y), std::move(e));
+    return checked->second;
+  };
   std::vector<ReducedMesh> out;
   auto emit = [&](long long budget, bool reached, int level) {
     ReducedMesh m;
@@ -244,11 +253,17 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
       std::iota(every.begin(), every.end(), 0);
       refit.UpdateMoments(moved, every, &y);
       refit.Solve(moved, y, Opt.SolverTolerance);
-      m = Snapshot(volume, moved, refit, y, Opt.ClampToVoxels, opacityCap);
+      y = OutputValues(moved, refit, std::move(y), Opt.ClampToVoxels, opacityCap);
+      m = Snapshot(volume, moved, y, refit.VoxelErrors(moved, y));
     }
     else
     {
-      m = Snapshot(volume, mesh, fit, x, Opt.ClampToVoxels, opacityCap);
+      if (!checked)
+      {
+        outputErrors();
+      }
+      m = Snapshot(volume, mesh, checked->first, std::move(checked->second));
+      checked.reset();
     }
     m.TargetTets = budget;
     m.TargetError = errorBound;
@@ -294,6 +309,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     {
       throw Error("cancelled");
     }
+    checked.reset(); // the mesh or the fit changed
     const long long nt = mesh.NumberOfTets();
     while (bi < budgets.size() && nt >= budgets[bi])
     {
@@ -304,14 +320,11 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     // max needs a pass over the voxels.
     // An error bound holds for the values output, clamped or capped (a few percent above the fit's).
     const bool clamped = Opt.ClampToVoxels || opacityCap;
-    auto outputErrors = [&]() {
-      return fit.VoxelErrors(mesh, clamped ? OutputValues(mesh, fit, x, Opt.ClampToVoxels, opacityCap) : x);
-    };
     double global;
     if (maxMetric && haveError)
     {
-      VoxelErrorReport e = outputErrors();
-      priority = std::move(e.TetWeightedMax);
+      VoxelErrorReport& e = outputErrors();
+      priority = e.TetWeightedMax;
       global = e.WeightedMax;
     }
     else if (weighted)
@@ -325,8 +338,8 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
       if (haveError && global <= errorBound)
       {
         reweigh();
-        VoxelErrorReport e = outputErrors();
-        priority = std::move(e.TetWeightedSse);
+        VoxelErrorReport& e = outputErrors();
+        priority = e.TetWeightedSse;
         global = e.WeightedRms;
       }
     }
@@ -336,8 +349,8 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
       global = std::sqrt(std::accumulate(priority.begin(), priority.end(), 0.0) / nvox);
       if (haveError && global <= errorBound && clamped)
       {
-        VoxelErrorReport e = outputErrors();
-        priority = std::move(e.TetWeightedSse);
+        VoxelErrorReport& e = outputErrors();
+        priority = e.TetWeightedSse;
         global = e.WeightedRms;
       }
     }
