@@ -2,9 +2,11 @@
 #include "DataLoader.h"
 #include "Error.h"
 #include "Render.h"
+#include "TransferFunction.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -33,9 +35,27 @@ std::string Scalar(const json& v)
   return v.dump(); // numbers print as in JSON
 }
 
+// A setting's file (a transfer function: "tf": "bone.tf") is relative to the job file, as its data
+// sets and output are; it was taken relative to the folder the batch ran in, so a job run from
+// elsewhere failed every frame with "cannot open transfer-function file". Preset names stay.
+std::string SettingValue(const std::string& key, const json& value, const fs::path& base)
+{
+  std::string v = Scalar(value);
+  if (key == "tf" && value.is_string() && !v.empty() && fs::path(v).is_relative())
+  {
+    const auto presets = art::TransferFunction::PresetNames();
+    if (std::find(presets.begin(), presets.end(), v) == presets.end())
+    {
+      v = (base / v).lexically_normal().string();
+    }
+  }
+  return v;
+}
+
 // {"tets": 20000, "exact": true} -> --tets 20000 --exact; false drops the flag, and so does a
 // setting only another kind of data takes (a job may hold volumes and triangle scenes alike).
-std::vector<std::string> OptionsToArgs(const json& s, std::string& text, const std::string& file, const art::DataKind* kind)
+std::vector<std::string> OptionsToArgs(
+  const json& s, std::string& text, const std::string& file, const fs::path& base, const art::DataKind* kind)
 {
   if (!s.is_object())
   {
@@ -75,7 +95,7 @@ std::vector<std::string> OptionsToArgs(const json& s, std::string& text, const s
       throw art::Error("setting '" + key + "' must be a number, string or boolean", file);
     }
     args.push_back("--" + key);
-    args.push_back(Scalar(value));
+    args.push_back(SettingValue(key, value, base));
     text += (text.empty() ? "" : " ") + key + "=" + Scalar(value);
   }
   return args;
@@ -264,7 +284,7 @@ BatchJob LoadBatchJob(const std::string& path)
           BatchTask r;
           r.name = refName = camName + "_reference";
           r.dataset = ds;
-          r.args = OptionsToArgs(j["reference"], r.setting, path, kind);
+          r.args = OptionsToArgs(j["reference"], r.setting, path, base, kind);
           r.args.insert(r.args.begin(), view.begin(), view.end());
           r.isReference = true;
           r.camera = static_cast<int>(c);
@@ -275,7 +295,7 @@ BatchJob LoadBatchJob(const std::string& path)
           BatchTask t;
           t.name = camName + "_s" + Num("%02d", static_cast<int>(s));
           t.dataset = ds;
-          t.args = OptionsToArgs(settings[s], t.setting, path, kind);
+          t.args = OptionsToArgs(settings[s], t.setting, path, base, kind);
           t.args.insert(t.args.begin(), view.begin(), view.end());
           t.reference = refName;
           t.camera = static_cast<int>(c);

@@ -38,6 +38,8 @@ struct BatchJob
 ///   "cameras": {"orbit": 8, "elevation": 15, "zoom": 1.0}   N frames around the data
 ///           or [{"azimuth": 0, "elevation": 10}, ...],
 ///   "settings": [{"tets": 20000}, {"tets": 80000, "integrator": "trapezoid"}],
+///                                             a file a setting names ("tf": "bone.tf") is
+///                                             relative to the job file too
 ///   "reference": {"reference": true}          render options of the reference image per camera
 ///                                             (optional; without it no error is computed)
 /// }
