@@ -92,6 +92,15 @@ json RunTask(const cli::BatchJob& job, const cli::BatchTask& t)
   const std::string log = job.outputDir + "/" + t.name + ".log";
   std::vector<std::string> argv = { cli::SelfExecutable(), "render", t.dataset, "-o", image };
   argv.insert(argv.end(), t.args.begin(), t.args.end());
+  // Frames reducing one volume alike (an orbit, other sizes) share the reduced mesh.
+  for (const std::string& a : t.args)
+  {
+    if (a.rfind("--tets", 0) == 0 || a.rfind("--max-error", 0) == 0)
+    {
+      argv.insert(argv.end(), { "--mesh-cache", job.outputDir + "/mesh-cache" });
+      break;
+    }
+  }
   argv.insert(argv.end(), { "--json", "--quiet" });
   const auto start = std::chrono::steady_clock::now();
   const cli::SubprocessResult r = cli::RunProgram(argv, log);

@@ -8,6 +8,7 @@
 #include "ImageIO.h"
 #include "ImageMetrics.h"
 #include "Json.h"
+#include "MeshCache.h"
 #include "ParallelTiles.h"
 #include "ProgressBar.h"
 #include "ReducedTets.h"
@@ -36,6 +37,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -79,6 +81,9 @@ void Declare(cli::Options& o)
   o.Add("no-relocate", 0, "", "keep the reduction's vertices on the bisection lattice (faster to reduce)");
   o.Add("plain-reduction", 0, "",
     "reduce in plain L2, not weighted by the transfer function's opacity (a few times faster on large volumes)");
+  o.Add("mesh-cache", 0, "DIR",
+    "keep each reduced mesh in DIR and reuse it when the same voxels are reduced with the same settings "
+    "(batch does this for its frames)");
   o.Add("reference", 0, "", "render the full-resolution voxel reference instead");
   o.Add("no-error", 0, "", "skip the reference render and the error figures");
 }
@@ -250,12 +255,28 @@ int Run(const cli::Options& o, const std::string& input)
         // Maximum intensity shows the fit's overshoot at sharp edges as bright facets.
         ro.ClampToVoxels = settings.mode == art::RenderSettings::Mode::MaxIntensity;
         const art::VoxelVolume vv = art::VolumeFromImage(volume, input);
-        auto levels = art::TetReducer(ro).Run(vv, &progress);
-        if (levels.empty())
+        art::ReducedMesh r;
+        std::optional<cli::MeshCache> cache;
+        bool cached = false;
+        if (o.Has("mesh-cache"))
         {
-          throw art::Error("the reducer produced no mesh", input);
+          cache.emplace(o.Get("mesh-cache"), vv, ro);
+          cached = cache->Load(r);
+          j.Set("mesh_cache", cache->File()).Set("mesh_cache_hit", cached);
         }
-        const art::ReducedMesh& r = levels.back();
+        if (!cached)
+        {
+          auto levels = art::TetReducer(ro).Run(vv, &progress);
+          if (levels.empty())
+          {
+            throw art::Error("the reducer produced no mesh", input);
+          }
+          r = std::move(levels.back());
+          if (cache)
+          {
+            cache->Store(r);
+          }
+        }
         mesh = cli::ToTetMesh(r);
         std::ostringstream ss;
         ss << "adaptive tets (" << (r.Weighted ? "opacity-weighted " : "") << "least-squares reduction"
@@ -266,7 +287,8 @@ int Run(const cli::Options& o, const std::string& input)
         {
           ss << "; weighted RMS " << r.WeightedRms << ", max " << r.WeightedMax;
         }
-        ss << (r.TargetReached ? ")" : "; " + cli::UnreachedReason(r, vv, ro.TargetTets == 0) + ")");
+        ss << (r.TargetReached ? ")" : "; " + cli::UnreachedReason(r, vv, ro.TargetTets == 0) + ")")
+           << (cached ? ", from the mesh cache" : "");
         meshLabel = ss.str();
         j.Set("reduced_rms", r.Rms).Set("reduced_max", r.Max).Set("reduced_weighted", r.Weighted);
         if (r.Weighted)
