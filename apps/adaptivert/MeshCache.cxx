@@ -142,6 +142,11 @@ MeshCache::MeshCache(const std::string& dir, const art::VoxelVolume& v, const ar
   {
     k << " " << l;
   }
+  k << " iso";
+  for (double v : o.IsoValues)
+  {
+    k << " " << v;
+  }
   k << " opacity";
   for (const auto& n : o.ScalarOpacity)
   {

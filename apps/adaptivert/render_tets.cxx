@@ -288,6 +288,10 @@ int Run(const cli::Options& o, const std::string& input)
           {
             ro.ScalarOpacity.emplace_back(n.s, n.alpha);
           }
+          for (const auto& iso : settings.isos) // and where its iso-surfaces lie
+          {
+            ro.IsoValues.push_back(iso.value);
+          }
         }
         // Not by default under iso-surfaces: on the CT's head rest (thin struts) the relocated fit
         // crosses 300 HU in blobs where the voxels have thin lines, 1-3 dB below the lattice.

@@ -64,9 +64,23 @@ double OpacityImportance::MaxOpacity(double lo, double hi) const
   return a;
 }
 
+void OpacityImportance::SetIsoValues(std::vector<double> values)
+{
+  for (double v : values)
+  {
+    if (!std::isfinite(v))
+    {
+      throw Error("an iso-value is NaN or infinite");
+    }
+  }
+  std::sort(values.begin(), values.end());
+  Iso = std::move(values);
+}
+
 double OpacityImportance::MaxSlope(double lo, double hi) const
 {
-  double g = 0;
+  const auto iso = std::lower_bound(Iso.begin(), Iso.end(), lo);
+  double g = iso != Iso.end() && *iso <= hi ? GIso : 0.0;
   for (size_t k = 0; k + 1 < N.size(); ++k)
   {
     // Closed intervals: a voxel exactly at a node sees the slopes on both sides.
@@ -128,9 +142,11 @@ void OpacityImportance::Prepare(const VoxelVolume& vol, double floor, int radius
   {
     GMax = std::max(GMax, std::fabs(N[k + 1].second - N[k].second) / (N[k + 1].first - N[k].first));
   }
+  GIso = Iso.empty() ? 0.0 : (GMax > 0 ? GMax : 1.0);
+  GMax = std::max(GMax, GIso);
   if (!(GMax > 0))
   {
-    Fl = 1.0; // constant opacity: every voxel matters alike
+    Fl = 1.0; // constant opacity and no iso-surface: every voxel matters alike
   }
   // The weight of a voxel whose fit stays inside its neighbourhood's range, as most do: the
   // reduction asks for it at every voxel of every level.
@@ -156,6 +172,17 @@ void OpacityImportance::Prepare(const VoxelVolume& vol, double floor, int radius
         if (g > g0 && N[k].first > Hi[i])
         {
           ph = std::min(ph, N[k].first);
+        }
+      }
+      for (double v : Iso) // zero-width segments of slope GIso
+      {
+        if (GIso > g0 && v < Lo[i])
+        {
+          pl = std::max(pl, v);
+        }
+        if (GIso > g0 && v > Hi[i])
+        {
+          ph = std::min(ph, v);
         }
       }
       // Floats rounded inwards, so that the open interval never holds a fit of another weight.

@@ -28,7 +28,13 @@ public:
   /// when the scalars do not strictly increase.
   explicit OpacityImportance(std::vector<std::pair<double, double>> nodes);
 
-  /// Largest |d alpha / ds| over the scalar interval [lo, hi] (0 where the opacity is flat).
+  /// Iso-surfaces drawn over the transfer function: a voxel whose neighbourhood's range holds one
+  /// of these values weighs as much as the steepest opacity ramp (the surface moves by the fit's
+  /// error over the gradient there, as sharply as an opacity step shows it). Before Prepare.
+  void SetIsoValues(std::vector<double> values);
+
+  /// Largest |d alpha / ds| over the scalar interval [lo, hi] (0 where the opacity is flat); an
+  /// iso-value inside counts as the steepest slope.
   double MaxSlope(double lo, double hi) const;
   /// Opacity at s.
   double Opacity(double s) const;
@@ -81,6 +87,8 @@ private:
   }
 
   std::vector<std::pair<double, double>> N;
+  std::vector<double> Iso; ///< sorted
+  double GIso = 0;         ///< the slope an iso-value counts as (Prepare)
   std::vector<float> Lo, Hi;
   std::vector<float> W0; ///< Weight with the fit inside [Lo, Hi] (float, as Lo and Hi: 4 bytes a voxel)
   std::vector<float> PL, PH; ///< Flat's open interval, rounded inwards

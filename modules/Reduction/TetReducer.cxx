@@ -182,6 +182,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   if (!Opt.ScalarOpacity.empty())
   {
     importance = std::make_unique<OpacityImportance>(Opt.ScalarOpacity);
+    importance->SetIsoValues(Opt.IsoValues);
     importance->Prepare(volume, Opt.ImportanceFloor, Opt.ImportanceRadius);
   }
   const bool weighted = importance != nullptr;

@@ -90,6 +90,9 @@ struct ReducerOptions
   /// 23.01 / 24.82 / 26.16 -> 23.08 / 25.05 / 29.20 dB at 10k / 50k / 250k tets; clamping both
   /// ways (ClampToVoxels) gave 21.4 / 23.3 / 28.3 dB. The fit and the levels after are unchanged.
   bool CapOpacity = true;
+  /// With ScalarOpacity: iso-surfaces drawn over it. Voxels next to one weigh as much as the
+  /// steepest opacity ramp (OpacityImportance::SetIsoValues), so the fit places the surfaces.
+  std::vector<double> IsoValues;
   double ImportanceFloor = 0.02; ///< weight of voxels whose neighbourhood meets no opacity change
   int ImportanceRadius = 2;      ///< neighbourhood (2 r + 1)^3 voxels whose scalar range counts
   int ReweighSteps = 3;          ///< weighted fit: extra reweighting steps on the coarse mesh

@@ -62,6 +62,26 @@ void vtkAdaptiveTetReducer::RemoveAllLevels()
   }
 }
 
+void vtkAdaptiveTetReducer::AddIsoValue(double value)
+{
+  this->IsoValues.push_back(value);
+  this->Modified();
+}
+
+void vtkAdaptiveTetReducer::RemoveAllIsoValues()
+{
+  if (!this->IsoValues.empty())
+  {
+    this->IsoValues.clear();
+    this->Modified();
+  }
+}
+
+double vtkAdaptiveTetReducer::GetIsoValue(int i) const
+{
+  return i >= 0 && i < static_cast<int>(this->IsoValues.size()) ? this->IsoValues[i] : 0.0;
+}
+
 vtkIdType vtkAdaptiveTetReducer::GetLevel(int i) const
 {
   return i >= 0 && i < static_cast<int>(this->Levels.size()) ? this->Levels[i] : 0;
@@ -134,6 +154,7 @@ int vtkAdaptiveTetReducer::RequestData(
       vtkErrorMacro("The scalar-opacity function has no nodes.");
       return 0;
     }
+    opt.IsoValues = this->IsoValues;
   }
   for (vtkIdType l : this->Levels)
   {
@@ -274,6 +295,7 @@ void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VectorMode: " << this->VectorMode << " (component " << this->VectorComponent << ")\n";
   os << indent << "Refinement: " << (this->Refinement == EDGE_SPLIT ? "EDGE_SPLIT" : "BISECTION") << "\n";
   os << indent << "Levels: " << this->Levels.size() << "\n";
+  os << indent << "IsoValues: " << this->IsoValues.size() << "\n";
   os << indent << "RMSError: " << this->RMSError << "\n";
   os << indent << "MaxError: " << this->MaxError << "\n";
   os << indent << "ScalarOpacity: " << this->ScalarOpacity << "\n";

@@ -155,6 +155,17 @@ public:
   vtkGetObjectMacro(ScalarOpacity, vtkPiecewiseFunction);
 
   /**
+   * With a ScalarOpacity: iso-values a renderer draws over it. Voxels next to one weigh as much
+   * as the steepest opacity ramp, so the fit places those surfaces where the opacity alone would
+   * not ask for tets (a skin iso-surface over a bone transfer function: 0.8 dB better PSNR on the
+   * CT head at 50k tets; see art::ReducerOptions::IsoValues).
+   */
+  void AddIsoValue(double value);
+  void RemoveAllIsoValues();
+  int GetNumberOfIsoValues() const { return static_cast<int>(this->IsoValues.size()); }
+  double GetIsoValue(int i) const;
+
+  /**
    * With a ScalarOpacity: clamp an output value to the range of the voxels under its vertex's
    * tets when its opacity exceeds every opacity those voxels have (default on). The fit's
    * overshoot past thin bright structures otherwise renders as opaque speckles; 0.4-4 dB better
@@ -209,6 +220,7 @@ protected:
   int VectorMode = DISABLED;
   int VectorComponent = 0;
   std::vector<vtkIdType> Levels;
+  std::vector<double> IsoValues;
   double RMSError = 0.0, MaxError = 0.0, BuildSeconds = 0.0;
   double WeightedRMSError = 0.0, WeightedMaxError = 0.0;
   vtkPiecewiseFunction* ScalarOpacity = nullptr;

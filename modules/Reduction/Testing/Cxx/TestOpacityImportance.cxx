@@ -261,3 +261,63 @@ TEST(OpacityImportance, BadOpacityInputIsAClearError)
   opt.ImportanceFloor = 0;
   EXPECT_THROW(art::TetReducer(opt).Run(v), art::Error);
 }
+
+TEST(OpacityImportance, IsoValuesWeighLikeTheSteepestRamp)
+{
+  art::OpacityImportance imp(HalfRamp);
+  imp.SetIsoValues({ 0.25 });
+  const int d[3] = { 8, 4, 4 };
+  const auto v = Volume(d, [](double x, double, double) { return 0.05 * x; }); // 0 .. 0.35: all clear
+  imp.Prepare(v, 0.05, 1);
+  EXPECT_DOUBLE_EQ(imp.MaxSlope(0.2, 0.3), 2.0); // the iso-value counts as the ramp's slope
+  EXPECT_DOUBLE_EQ(imp.MaxSlope(0.1, 0.2), 0.0);
+  EXPECT_FLOAT_EQ(imp.Weight(1, 0.05, 0.05), 0.05); // 0 .. 0.1 around it: flat
+  EXPECT_DOUBLE_EQ(imp.Weight(1, 0.05, 0.3), 1.0);  // a fit across the iso-value counts in full
+  EXPECT_DOUBLE_EQ(imp.Weight(5, 0.25, 0.25), 1.0); // on the surface
+  EXPECT_THROW(imp.SetIsoValues({ std::nan("") }), art::Error);
+
+  // A ball whose surface (0.2) lies where the opacity is flat, beside ripples on the ramp that
+  // draw the weighted refinement: reduced for the ramp alone the ball's voxels weigh the floor;
+  // with the iso-value they weigh in full and its surface comes out in place.
+  const int n[3] = { 64, 40, 40 };
+  const auto ball = Volume(n, [](double x, double y, double z) {
+    if (x >= 32)
+    {
+      return 0.8 + 0.2 * std::sin(0.45 * y) * std::sin(0.35 * z) * std::cos(0.3 * x);
+    }
+    const double r = std::sqrt((x - 15.5) * (x - 15.5) + (y - 18) * (y - 18) + (z - 21) * (z - 21));
+    return r < 11 ? 0.4 : 0.0;
+  });
+  art::ReducerOptions opt;
+  opt.TargetTets = 6000;
+  opt.ScalarOpacity = HalfRamp;
+  const auto without = art::TetReducer(opt).Run(ball).back();
+  opt.IsoValues = { 0.2 };
+  const auto with = art::TetReducer(opt).Run(ball).back();
+  // Voxels whose fitted value is on the other side of 0.2 from their own: the surface misplaced.
+  auto misplaced = [&](const art::ReducedMesh& m) {
+    auto img = vtkSmartPointer<vtkImageData>::New();
+    img->SetDimensions(ball.Dims);
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(ball.Name.c_str());
+    a->SetNumberOfTuples(ball.NumberOfVoxels());
+    for (long long i = 0; i < ball.NumberOfVoxels(); ++i)
+    {
+      a->SetValue(i, ball.Value(i));
+    }
+    img->GetPointData()->SetScalars(a);
+    auto probe = vtkSmartPointer<vtkProbeFilter>::New();
+    probe->SetInputData(img);
+    probe->SetSourceData(art::ToUnstructuredGrid(m, true));
+    probe->Update();
+    vtkDataArray* fit = probe->GetOutput()->GetPointData()->GetArray(ball.Name.c_str());
+    long long k = 0;
+    for (long long i = 0; i < ball.NumberOfVoxels(); ++i)
+    {
+      k += i % n[0] < 28 && (ball.Value(i) > 0.2) != (fit->GetTuple1(i) > 0.2); // clear of the ripples' step
+    }
+    return k;
+  };
+  const long long mw = misplaced(with), mo = misplaced(without);
+  EXPECT_LT(mw, 0.5 * mo) << mw << " vs " << mo;
+}

@@ -151,6 +151,25 @@ assert runs[True][0] <= runs[False][0], runs
 assert runs[True][2] < 0.5 * runs[True][1], runs
 assert runs[True][1] > runs[False][1], runs  # the plain error pays for what is not seen
 
+# Iso-values reach the weighting (their effect is TestOpacityImportance's): the reduction changes
+# with one, re-executes after AddIsoValue, and is the same again once they are removed.
+r = adaptivert.vtkAdaptiveTetReducer()
+r.SetInputData(ripples)
+r.SetTargetTets(1500)
+r.SetScalarOpacity(opacity)
+r.SetImportanceRadius(1)
+r.Update()
+plainIso = (left_cells(r.GetOutput()), r.GetWeightedRMSError())
+assert plainIso == runs[True][::2], (plainIso, runs)
+r.AddIsoValue(0.2)
+assert r.GetNumberOfIsoValues() == 1 and r.GetIsoValue(0) == 0.2
+r.Update()
+withIso = (left_cells(r.GetOutput()), r.GetWeightedRMSError())
+assert withIso != plainIso, withIso
+r.RemoveAllIsoValues()
+r.Update()
+assert (left_cells(r.GetOutput()), r.GetWeightedRMSError()) == plainIso
+
 # ClampToVoxels keeps every output value inside the input's range (the plain fit overshoots it).
 lo, hi = ripples.GetPointData().GetScalars().GetRange()
 ranges = {}
