@@ -3,6 +3,7 @@
 // tet count, the render time and the error against the full-resolution voxel render. It is
 // `adaptivert render` with the defaults below, so the demo and the tool never drift apart.
 #include "Command.h"
+#include "DataLoader.h"
 #include "Error.h"
 
 #include <cstdio>
@@ -29,6 +30,22 @@ int Run(const cli::Options& o)
   std::vector<std::string> args = { o.Get("input"), "-o", o.Get("output"), "--size", o.Get("size"),
     "--threads", o.Get("threads") };
 #ifdef ART_HAVE_Reduction
+  // The demo reduces a volume; given a mesh or a surface, render refused the --tets it was passed
+  // ('--tets does not apply to a surface'), an option the user never gave.
+  art::DataKind kind = art::DataKind::Volume;
+  try
+  {
+    kind = art::KindOf(o.Get("input"));
+  }
+  catch (const art::Error&)
+  {
+    // a missing or unknown file: render names it
+  }
+  if (kind != art::DataKind::Volume)
+  {
+    throw cli::UsageError("--input must be a volume (the demo reduces it); '" + o.Get("input") + "' is a " +
+      art::KindName(kind) + ": render it with 'adaptivert render " + o.Get("input") + " -o OUT.png'");
+  }
   args.insert(args.end(), { "--tets", o.Get("tets") });
 #else
   std::fprintf(stderr, "demo: the reducer is not in this build; rendering full-resolution tets\n");
