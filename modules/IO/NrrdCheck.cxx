@@ -8,8 +8,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -122,11 +124,26 @@ void CheckNrrd(const std::string& path)
   const int esize = NrrdTypeSize(keys["type"]);
   const std::string encoding = keys["encoding"];
   const std::string df = DataFileField(keys);
-  if (df.find(' ') != std::string::npos || df.find('%') != std::string::npos || df.compare(0, 4, "LIST") == 0)
+  // vtkNrrdReader (VTK 9.1) segfaults on every file series, even a complete one. It takes the field
+  // as NRRD does: LIST, or four words or more ("<format> <min> <max> <step> [<subdim>]"); fewer
+  // words are one file's name, spaces and all ("my scan.raw" was refused as a series).
+  std::istringstream words(df);
+  std::vector<std::string> w{ std::istream_iterator<std::string>(words), std::istream_iterator<std::string>() };
+  auto integer = [](const std::string& t) {
+    char* end = nullptr;
+    std::strtol(t.c_str(), &end, 10);
+    return !t.empty() && *end == '\0';
+  };
+  if ((!w.empty() && w[0] == "LIST") || (w.size() >= 4 && integer(w[1]) && integer(w[2]) && integer(w[3])))
   {
-    // vtkNrrdReader (VTK 9.1) segfaults on every file series, even a complete one.
     throw Error("data file '" + df + "' is a series of files, which VTK's NRRD reader cannot read: join the "
                 "slices into one data file (unu join, or save from Slicer as one .nrrd)",
+      path);
+  }
+  if (w.size() >= 4)
+  {
+    throw Error("data file '" + df + "' has three spaces or more in its name, which VTK's NRRD reader takes "
+                "for a series of files: rename the data file (and the header's 'data file' line)",
       path);
   }
   if (esize == 0 || (encoding != "raw") || !keys.count("sizes"))

@@ -881,6 +881,16 @@ TEST(DataLoader, TruncatedNrrd)
     std::ofstream(dir + "series.nhdr", std::ios::binary) << header << "data file: " << series << "\n";
     ExpectError(dir + "series.nhdr", "is a series of files, which VTK's NRRD reader cannot read");
   }
+  // A data file whose name has a space or two, or a '%', is one file (as NRRD and VTK read it); it
+  // was refused as a series. Three spaces or more VTK takes for a series's pattern: said so.
+  for (const std::string name : { "my short.raw", "my short %.raw", "a b c.raw" })
+  {
+    std::ofstream(dir + name, std::ios::binary) << std::string(330, 'x');
+    std::ofstream(dir + "spaced.nhdr", std::ios::binary) << header << "data file: " << name << "\n";
+    EXPECT_EQ(art::LoadVolume(dir + "spaced.nhdr")->GetNumberOfPoints(), 165) << name;
+  }
+  std::ofstream(dir + "spaced.nhdr", std::ios::binary) << header << "data file: a b c d.raw\n";
+  ExpectError(dir + "spaced.nhdr", "has three spaces or more in its name, which VTK's NRRD reader takes for a series");
 }
 
 // The same choice on a mesh (the viewer's --array; render's for meshes needs it too): the vector's
