@@ -1,5 +1,6 @@
 // adaptivert render INPUT -o OUT: renders a volume, tet mesh or triangle scene without a window.
 #include "Command.h"
+#include "AtomicFile.h"
 #include "Camera.h"
 #include "Error.h"
 #include "ImageIO.h"
@@ -148,7 +149,14 @@ int Run(const cli::Options& o)
   }
   const std::string input = o.Positional()[0];
   cli::Zoom(o); // a usage error before any loading
+  cli::ViewFromOptions(o);
   const art::DataKind kind = art::KindOf(input);
+  {
+    // An output that cannot be written (a folder that does not exist or is read-only, a folder's
+    // name) is said before loading and reducing: it was said at the end, after a minute of
+    // reducing a large volume. The probe's temporary file is removed as it goes.
+    art::AtomicFile probe(o.Get("output"));
+  }
   for (const auto& r : cli::Renderers())
   {
     for (art::DataKind k : r.kinds)
