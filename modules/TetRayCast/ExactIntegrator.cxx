@@ -12,10 +12,11 @@
 #define ART_FMA_CLONES
 #endif
 #if defined(__GNUC__)
-#define ART_INLINE inline __attribute__((always_inline))
+#define ART_ALWAYS_INLINE __attribute__((always_inline))
 #else
-#define ART_INLINE inline
+#define ART_ALWAYS_INLINE
 #endif
+#define ART_INLINE inline ART_ALWAYS_INLINE
 
 namespace art
 {
@@ -267,7 +268,7 @@ ART_FMA_CLONES void ExactIntegrator::IntegrateSpan(double s0, double s1, double 
   {
     TF.EvaluateIn(i0, s0, ca, ta);
   }
-  auto composite = [&](double l) {
+  auto composite = [&](double l) ART_ALWAYS_INLINE { // inlined, so each clone has its own
     // A piece between two transparent control points adds nothing (a third of the pieces on the
     // CT head's skin-and-bone function).
     if (ta > 0.0 || tb > 0.0)
