@@ -47,9 +47,9 @@ art::VoxelVolume Volume(const int d[3], const std::function<double(double, doubl
   return v;
 }
 
-// Rebuilds an image from the volume and probes the reduced mesh at every voxel centre: the
-// weighted error of any mesh, measured outside the reducer.
-double ProbedWeightedRms(const art::VoxelVolume& v, const art::ReducedMesh& m, const art::OpacityImportance& imp)
+// Rebuilds an image from the volume and probes the reduced mesh at every voxel centre: the fit
+// of any mesh, taken outside the reducer.
+vtkSmartPointer<vtkDataArray> ProbedFit(const art::VoxelVolume& v, const art::ReducedMesh& m)
 {
   auto img = vtkSmartPointer<vtkImageData>::New();
   img->SetDimensions(v.Dims);
@@ -65,7 +65,13 @@ double ProbedWeightedRms(const art::VoxelVolume& v, const art::ReducedMesh& m, c
   probe->SetInputData(img);
   probe->SetSourceData(art::ToUnstructuredGrid(m, true));
   probe->Update();
-  vtkDataArray* fit = probe->GetOutput()->GetPointData()->GetArray(v.Name.c_str());
+  return probe->GetOutput()->GetPointData()->GetArray(v.Name.c_str());
+}
+
+// The weighted error of any mesh, measured outside the reducer.
+double ProbedWeightedRms(const art::VoxelVolume& v, const art::ReducedMesh& m, const art::OpacityImportance& imp)
+{
+  const auto fit = ProbedFit(v, m);
   double s = 0;
   for (long long i = 0; i < v.NumberOfVoxels(); ++i)
   {
@@ -296,21 +302,7 @@ TEST(OpacityImportance, IsoValuesWeighLikeTheSteepestRamp)
   const auto with = art::TetReducer(opt).Run(ball).back();
   // Voxels whose fitted value is on the other side of 0.2 from their own: the surface misplaced.
   auto misplaced = [&](const art::ReducedMesh& m) {
-    auto img = vtkSmartPointer<vtkImageData>::New();
-    img->SetDimensions(ball.Dims);
-    auto a = vtkSmartPointer<vtkDoubleArray>::New();
-    a->SetName(ball.Name.c_str());
-    a->SetNumberOfTuples(ball.NumberOfVoxels());
-    for (long long i = 0; i < ball.NumberOfVoxels(); ++i)
-    {
-      a->SetValue(i, ball.Value(i));
-    }
-    img->GetPointData()->SetScalars(a);
-    auto probe = vtkSmartPointer<vtkProbeFilter>::New();
-    probe->SetInputData(img);
-    probe->SetSourceData(art::ToUnstructuredGrid(m, true));
-    probe->Update();
-    vtkDataArray* fit = probe->GetOutput()->GetPointData()->GetArray(ball.Name.c_str());
+    const auto fit = ProbedFit(ball, m);
     long long k = 0;
     for (long long i = 0; i < ball.NumberOfVoxels(); ++i)
     {
