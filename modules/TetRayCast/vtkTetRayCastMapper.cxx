@@ -13,6 +13,7 @@
 #include <vtkCamera.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkCommand.h>
+#include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
@@ -334,6 +335,21 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   const auto frameStart = std::chrono::steady_clock::now();
   art::RenderSettings s;
   this->WarnUnsupported(vol->GetProperty());
+  vtkVolumeProperty* prop = vol->GetProperty();
+  int cellFlag = 0;
+  vtkDataArray* shown = vtkAbstractMapper::GetScalars(
+    grid, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  if (prop && !prop->GetIndependentComponents() && shown && shown->GetNumberOfComponents() > 1 &&
+    !(this->Warned & 4))
+  {
+    // VTK's image mappers then take the colour from the components themselves (RGBA, or a value
+    // and its opacity); the mapper draws one scalar through the functions, a different image.
+    this->Warned |= 4;
+    vtkWarningMacro("the vtkVolumeProperty's IndependentComponents off (colour from the array's "
+      << shown->GetNumberOfComponents()
+      << " components themselves) is not supported: one scalar of them (VectorMode) is drawn through "
+         "the colour and opacity functions");
+  }
   try
   {
     s.tf = art::TransferFunction::FromVTK(ColourProperty(vol->GetProperty()));

@@ -137,7 +137,8 @@ protected:
   double LastTetsCrossed = 0.0;
   int VectorMode = DISABLED;
   int VectorComponent = 0;
-  int Warned = 0; ///< unsupported property settings already named: 1 shading, 2 gradient opacity
+  int Warned = 0; ///< unsupported property settings already named: 1 shading, 2 gradient opacity,
+                 ///< 4 IndependentComponents off
 
   /** Warns, once each, of property settings the mapper does not follow (shading, gradient opacity). */
   void WarnUnsupported(vtkVolumeProperty* p);

@@ -57,9 +57,29 @@ got = frames(3)
 print(got[1:])
 assert len(got) == 2 and "gradient opacity" in got[1], got
 
+# IndependentComponents off (colour straight from an RGBA array's components, as VTK's image
+# mappers draw it) is named once when a multi-component array is drawn: the mapper draws its
+# magnitude through the functions instead, a different image, without a word before.
+from vtkmodules.util.numpy_support import numpy_to_vtk
+import numpy as np
+rgba = numpy_to_vtk(np.tile([1.0, 0.0, 0.0, 1.0], (box.GetNumberOfPoints(), 1)), deep=1)
+rgba.SetName("rgba")
+box.GetPointData().AddArray(rgba)
+mapper.SetScalarModeToUsePointFieldData()
+mapper.SelectScalarArray("rgba")
+mapper.SetVectorMode(adaptivert.vtkTetRayCastMapper.MAGNITUDE)
+assert frames(2)[2:] == [], warnings[2:]  # independent components (VTK's default): no news
+prop.IndependentComponentsOff()
+got = frames(3)
+print(got[2:])
+assert len(got) == 3 and "IndependentComponents off" in got[2] and "4 components" in got[2], got
+prop.IndependentComponentsOn()
+mapper.SetScalarModeToDefault()
+mapper.SetVectorMode(adaptivert.vtkTetRayCastMapper.DISABLED)
+
 empty = vtkUnstructuredGrid()
 empty.SetPoints(box.GetPoints())
 mapper.SetInputData(empty)
 got = frames(2)
-assert len(got) == 2, got  # no error for the empty grid
+assert len(got) == 3, got  # no error for the empty grid
 print("ok")
