@@ -41,6 +41,12 @@ grep -q "from the mesh cache" "$work/damaged.txt" && fail "a damaged entry was u
 cmp -s "$work/first.png" "$work/damaged.png" || fail "the render after a damaged entry differs"
 render "$vol" again > "$work/again.txt"
 grep -q "from the mesh cache" "$work/again.txt" || fail "the rewritten entry was not used"
+# A cache that cannot be written (its folder's parent is a file) is a note; the image is made.
+"$art" render "$vol" -o "$work/nocache.png" --size 64x64 --tets 2000 --no-error --mesh-cache "$work/first.png/cache" \
+  > "$work/nocache.txt" || fail "an unwritable cache failed the render"
+grep -q "note .*the mesh cache was not written: .*first.png/cache: cannot create" "$work/nocache.txt" \
+  || fail "unwritable cache: $(cat "$work/nocache.txt")"
+cmp -s "$work/first.png" "$work/nocache.png" || fail "the render without its cache differs"
 # A mesh input takes no cache: it is a usage error like the other reduction options.
 "$art" render "$src/modules/TetRayCast/Testing/Data/two-tets.vtu" -o "$work/m.png" --mesh-cache "$cache" \
   2> "$work/mesh.txt" && fail "a mesh with --mesh-cache was accepted"

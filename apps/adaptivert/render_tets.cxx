@@ -316,9 +316,16 @@ int Run(const cli::Options& o, const std::string& input)
             throw art::Error("the reducer produced no mesh", input);
           }
           r = std::move(levels.back());
-          if (cache)
+          try
           {
-            cache->Store(r);
+            if (cache)
+            {
+              cache->Store(r);
+            }
+          }
+          catch (const art::Error& e) // the image is still worth making
+          {
+            note += std::string(note.empty() ? "" : "; ") + "the mesh cache was not written: " + e.what();
           }
         }
         mesh = cli::ToTetMesh(r);
