@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -272,6 +273,9 @@ int Run(const cli::Options& o)
   cli::ProgressBar bar(quiet);
   const double poll = o.GetDouble("poll");
   size_t rendered = 0, failed = 0;
+  // A data set's frames that fail alike (a missing file: one per camera and setting, 120 lines for
+  // 40 cameras) are named once, then counted.
+  std::map<std::pair<std::string, std::string>, size_t> alike;
   for (;;)
   {
     size_t done = 0, waiting = 0;
@@ -303,9 +307,12 @@ int Run(const cli::Options& o)
       if (res["status"] != "ok")
       {
         ++failed;
-        bar.Finish();
-        std::fprintf(stderr, "adaptivert: %s: frame %s failed: %s\n", t.dataset.c_str(), t.name.c_str(),
-          res["error"].get<std::string>().c_str());
+        const std::string error = res["error"].get<std::string>();
+        if (alike[{ t.dataset, error }]++ == 0)
+        {
+          bar.Finish();
+          std::fprintf(stderr, "adaptivert: %s: frame %s failed: %s\n", t.dataset.c_str(), t.name.c_str(), error.c_str());
+        }
       }
       progressed = true;
       ++done;
@@ -321,6 +328,14 @@ int Run(const cli::Options& o)
   }
   bar.Update(1.0, "batch");
   bar.Finish();
+  for (const auto& [key, count] : alike)
+  {
+    if (count > 1)
+    {
+      std::fprintf(stderr, "adaptivert: %s: %zu more frames failed alike (%s)\n", key.first.c_str(), count - 1,
+        key.second.c_str());
+    }
+  }
   // Frames that failed in an earlier run fail this one too: a re-run (a CI step, a resumed job)
   // reported 'tasks 6 (0 rendered now, 0 failed)' and exited 0 over four failed frames.
   size_t failedAll = 0;
