@@ -18,8 +18,9 @@
  * choose the field (cell values are averaged to the points), and VectorMode / VectorComponent what
  * of a vector array (velocity, RGB) is drawn, as vtkSmartVolumeMapper has them; ghost cells (DUPLICATECELL in
  * vtkGhostType) are skipped, as VTK's mappers skip them. Clipping planes (AddClippingPlane,
- * world coordinates, the side the normal points to kept) cut the mesh itself, exact for its linear
- * field; moving a plane rebuilds the mesh. As VTK's own volume mappers, each frame fires
+ * world coordinates, the side the normal points to kept) cut each ray's interval, exact for the
+ * linear field; a moving plane only cuts the rays, the mesh is kept. A grey colour function (SetColor with a
+ * vtkPiecewiseFunction) is drawn as grey. As VTK's own volume mappers, each frame fires
  * VolumeMapperRenderStartEvent, VolumeMapperRenderProgressEvent (call data: a double in [0, 1],
  * on the thread that called Render) and VolumeMapperRenderEndEvent; when the render window's
  * abort check says so (an interactor's pending event), the frame stops and is not drawn.
