@@ -62,8 +62,13 @@ std::vector<ScriptAction> ReadScript(const std::string& path)
     }
     else if (word == "screenshot")
     {
+      // The rest of the line is the file's name, spaces and all ("screenshot my view.png" was
+      // "unexpected 'view.png'"); blanks (and a CRLF's CR) around it are not part of it.
       a.What = ScriptAction::Kind::Screenshot;
-      if (!(ss >> a.Text))
+      std::getline(ss, a.Text);
+      const auto first = a.Text.find_first_not_of(" \t\r"), last = a.Text.find_last_not_of(" \t\r");
+      a.Text = first == std::string::npos ? std::string() : a.Text.substr(first, last - first + 1);
+      if (a.Text.empty())
       {
         fail("'screenshot' expects a file");
       }

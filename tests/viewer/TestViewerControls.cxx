@@ -182,6 +182,18 @@ TEST(ViewerScript, ReadsEveryAction)
   EXPECT_EQ(s[8].Text, "out.png");
 }
 
+// A screenshot's name is the rest of its line, spaces and non-ASCII letters included; it was cut at
+// the first space ("line 1: unexpected 'view'"). Blanks and a CRLF's CR around it are dropped.
+TEST(ViewerScript, ScreenshotNameWithSpaces)
+{
+  const auto s = ReadScript(WriteTemp("viewer-spaces.script",
+    "screenshot my view \xC3\xA9.png\nscreenshot \t out dir/b.png  \r\nscreenshot c.png # a comment\n"));
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s[0].Text, "my view \xC3\xA9.png");
+  EXPECT_EQ(s[1].Text, "out dir/b.png");
+  EXPECT_EQ(s[2].Text, "c.png");
+}
+
 // A script saved by a Windows editor: a UTF-8 byte-order mark before the first action (it was
 // "unknown action '\xEF\xBB\xBFkey'") and CRLF line ends.
 TEST(ViewerScript, ByteOrderMarkAndCrlf)
