@@ -178,6 +178,12 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   mesh.InitKuhn(volume.Dims, cubes);
   const int n0 = mesh.NumberOfTets();
 
+  // The stage starts before the weights and the first fit: on a 400 x 400 x 300 volume they took 7 s
+  // in which no progress was shown.
+  if (progress)
+  {
+    progress->Begin("reduce", 1.0);
+  }
   std::unique_ptr<OpacityImportance> importance;
   if (!Opt.ScalarOpacity.empty())
   {
@@ -207,13 +213,11 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     reweigh();
   }
 
-  if (progress)
-  {
-    progress->Begin("reduce", 1.0);
-  }
   double reported = 0, firstError = -1;
+  // Refinement fills 95% of the stage; the last 5% (End) is the output's values and their errors
+  // over every voxel, which took 5 s of 18 at a 400 x 400 x 300 volume with the bar at 100%.
   auto report = [&](double f) {
-    f = std::min(1.0, std::max(reported, f));
+    f = std::min(0.95, std::max(reported, 0.95 * f));
     if (progress && f > reported)
     {
       progress->Advance(f - reported);
