@@ -325,6 +325,19 @@ void CheckOneComponent(vtkDataArray* a, const char* kind, const std::string& fil
       file);
   }
 }
+
+// An array shorter than its points or cells (built by hand: SetNumberOfTuples forgotten or wrong)
+// was read past its end: garbage values, reported as 'point 31 has a non-finite coordinate or
+// scalar', or a crash.
+void CheckLength(vtkDataArray* a, const char* kind, vtkIdType count, const std::string& file)
+{
+  if (a->GetNumberOfTuples() < count)
+  {
+    throw Error(std::string(kind) + " array '" + (a->GetName() ? a->GetName() : "") + "' holds " +
+        std::to_string(a->GetNumberOfTuples()) + " values for " + std::to_string(count) + " " + kind + "s",
+      file);
+  }
+}
 } // namespace
 
 TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, std::string* note, const std::string& file)
@@ -379,6 +392,7 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
         file);
     }
     CheckOneComponent(cs, "cell", file);
+    CheckLength(cs, "cell", ug->GetNumberOfCells(), file);
     vtkNew<vtkCellDataToPointData> toPoints;
     toPoints->SetInputData(ug);
     toPoints->ProcessAllArraysOff();
@@ -390,6 +404,7 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     notes += (notes.empty() ? "" : "; ") + ("cell scalars '" + name + "' were averaged to the points");
   }
   CheckOneComponent(s, "point", file);
+  CheckLength(s, "point", ug->GetNumberOfPoints(), file);
   double source[2];
   const bool fromVolume = s == grid->GetPointData()->GetScalars() && SourceRange(grid, s, source);
   // Only 3-D cells other than tets need tetrahedralising; lower cells beside tets (ParaView's

@@ -495,12 +495,37 @@ TEST(TetMesh, FromVTKAndBadMeshes)
   EXPECT_DOUBLE_EQ(cm.Scalars()[4], 6.0); // only in tet 1
   EXPECT_DOUBLE_EQ(cm.Scalars()[1], 4.0); // shared
   EXPECT_THROW(TetMesh::FromVTK(ug, "temperature"), Error);
+  // An array shorter than its cells or points (made by hand) was read past its end ('point 31 has a
+  // non-finite coordinate or scalar', or a crash): it is named with both counts.
+  cs->SetNumberOfTuples(1);
+  try
+  {
+    TetMesh::FromVTK(ug, {}, nullptr, "short.vtu");
+    FAIL() << "a short cell array accepted";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("short.vtu: cell array 'pressure' holds 1 values for 2 cells"),
+      std::string::npos) << e.what();
+  }
   ug->GetCellData()->Initialize();
   vtkNew<vtkDoubleArray> s;
   s->SetName("f");
-  for (int i = 0; i < 6; ++i)
+  for (int i = 0; i < 3; ++i)
     s->InsertNextValue(i);
   ug->GetPointData()->SetScalars(s);
+  try
+  {
+    TetMesh::FromVTK(ug, {}, nullptr, "short.vtu");
+    FAIL() << "a short point array accepted";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("short.vtu: point array 'f' holds 3 values for 6 points"),
+      std::string::npos) << e.what();
+  }
+  for (int i = 3; i < 6; ++i)
+    s->InsertNextValue(i);
   const TetMesh m = TetMesh::FromVTK(ug);
   EXPECT_EQ(m.NumberOfTets(), 2u);
   EXPECT_EQ(m.Neighbours(0)[0], 1); // face (1,2,3) is shared
