@@ -71,6 +71,13 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
       file);
   }
   const long long np = static_cast<long long>(d[0]) * d[1] * d[2];
+  if (s->GetNumberOfTuples() < np)
+  {
+    // Read past its end otherwise (scalars set by hand on an image of other dimensions).
+    throw Error("the volume's scalars hold " + std::to_string(s->GetNumberOfTuples()) + " values for " +
+        std::to_string(d[0]) + " x " + std::to_string(d[1]) + " x " + std::to_string(d[2]) + " voxels",
+      file);
+  }
   const long long nt = 5 * (d[0] - 1LL) * (d[1] - 1) * (d[2] - 1);
   const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
   CheckFullResolutionFits(nt, pages > 0 && pageSize > 0 ? double(pages) * pageSize : 0.0, file);

@@ -12,6 +12,7 @@
 #include <vtkCellType.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -446,6 +447,21 @@ TEST(TetMesh, FromImageSaysWhatIsMissing)
   vtkNew<vtkImageData> bare;
   bare->SetDimensions(4, 4, 4);
   EXPECT_THROW(TetMesh::FromImage(bare), Error);
+  // Scalars of another image's size (set by hand) were read past their end.
+  vtkNew<vtkFloatArray> few;
+  few->SetNumberOfTuples(27);
+  few->Fill(1.0);
+  bare->GetPointData()->SetScalars(few);
+  try
+  {
+    TetMesh::FromImage(bare, "few.vti");
+    FAIL() << "27 values for 64 voxels accepted";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("few.vti: the volume's scalars hold 27 values for 4 x 4 x 4 voxels"),
+      std::string::npos) << e.what();
+  }
   // NaN voxels (a masked MRI map) are named as voxels, by their index in the extent; the message
   // was the mesh's "point 21 has a non-finite coordinate or scalar".
   vtkNew<vtkImageData> masked;
