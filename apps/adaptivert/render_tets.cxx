@@ -434,6 +434,14 @@ int Run(const cli::Options& o, const std::string& input)
   {
     m = art::CompareImages(img, ref);
   }
+  if (!o.Flag("reference") && st.counters.hits == 0)
+  {
+    // As render says of a surface out of view: a blank image and "PSNR inf" would pass for a
+    // perfect render.
+    note += std::string(note.empty() ? "" : "; ") +
+      "no ray meets the data (the camera sees none of it, or the clipping planes cut it all): the image is "
+      "background only";
+  }
   if (settings.mode == art::RenderSettings::Mode::Composite && settings.isos.empty() && st.counters.hits > 0 &&
     !settings.tf.Transparent(range[0], range[1]))
   {
