@@ -49,6 +49,14 @@ endfunction()
 # code and what it prints): art_expect_test(<test name> [PROGRAM <exe>] EXIT <code>
 # [STDOUT <regex>] [STDERR <regex>] [ONE_LINE_STDERR] [LABELS ..] ARGS ...). PROGRAM defaults to
 # the adaptivert tool, LABELS to unit.
+# Runs `test` only after removing `dir`, the output a run before left (a batch's finished frames
+# would otherwise count as done): a setup test <test>_clean and its fixture.
+function(art_clean_first test dir)
+  add_test(NAME ${test}_clean COMMAND ${CMAKE_COMMAND} -E rm -rf "${dir}")
+  set_tests_properties(${test}_clean PROPERTIES FIXTURES_SETUP ${test}_clean LABELS unit)
+  set_tests_properties(${test} PROPERTIES FIXTURES_REQUIRED ${test}_clean)
+endfunction()
+
 function(art_expect_test name)
   cmake_parse_arguments(PARSE_ARGV 1 arg "ONE_LINE_STDERR" "PROGRAM;EXIT;STDOUT;STDERR" "ARGS;LABELS")
   if(NOT arg_PROGRAM)
