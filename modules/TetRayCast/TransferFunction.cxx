@@ -123,13 +123,23 @@ TransferFunction TransferFunction::FromVTK(vtkVolumeProperty* p)
   {
     throw Error("no volume property");
   }
-  vtkColorTransferFunction* ctf = p->GetRGBTransferFunction(0);
+  // One colour channel (SetColor with a vtkPiecewiseFunction) is grey, as VTK's mappers draw it.
+  // GetRGBTransferFunction would put VTK's default black-to-white ramp over 0..1024 in its place
+  // (a grey of 0.8 on values near 1 drew black) and switch the user's property to three channels,
+  // so VTK's own mappers lost the grey function too.
+  vtkPiecewiseFunction* gtf = p->GetColorChannels(0) == 1 ? p->GetGrayTransferFunction(0) : nullptr;
+  vtkColorTransferFunction* ctf = gtf ? nullptr : p->GetRGBTransferFunction(0);
   vtkPiecewiseFunction* otf = p->GetScalarOpacity(0);
   std::vector<double> s;
   double v[6];
   for (int i = 0; ctf && i < ctf->GetSize(); ++i)
   {
     ctf->GetNodeValue(i, v);
+    s.push_back(v[0]);
+  }
+  for (int i = 0; gtf && i < gtf->GetSize(); ++i)
+  {
+    gtf->GetNodeValue(i, v);
     s.push_back(v[0]);
   }
   for (int i = 0; otf && i < otf->GetSize(); ++i)
@@ -148,6 +158,10 @@ TransferFunction TransferFunction::FromVTK(vtkVolumeProperty* p)
     if (ctf && ctf->GetSize() > 0)
     {
       ctf->GetColor(x, n.rgb);
+    }
+    if (gtf && gtf->GetSize() > 0)
+    {
+      n.rgb[0] = n.rgb[1] = n.rgb[2] = gtf->GetValue(x);
     }
     if (otf && otf->GetSize() > 0)
     {

@@ -11,7 +11,6 @@
 
 #include <vtkAutoInit.h>
 #include <vtkCamera.h>
-#include <vtkColorTransferFunction.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
@@ -91,33 +90,6 @@ std::vector<double> RayEndsFromDepth(
     }
   }
   return ends;
-}
-
-// The property the engine's transfer function is read from. A grey colour function (SetColor
-// with a vtkPiecewiseFunction: one colour channel, as VTK's mappers take it) becomes an RGB one of
-// equal channels in a copy: GetRGBTransferFunction would put VTK's default black-to-white ramp
-// over 0..1024 in its place (a grey of 0.8 on values near 1 drew black) and switch the user's
-// property to three channels, so VTK's own mappers lost the grey function too.
-vtkSmartPointer<vtkVolumeProperty> ColourProperty(vtkVolumeProperty* p)
-{
-  if (!p || p->GetColorChannels(0) != 1)
-  {
-    return p;
-  }
-  vtkPiecewiseFunction* grey = p->GetGrayTransferFunction(0); // VTK's default ramp when none is set
-  vtkNew<vtkColorTransferFunction> ctf;
-  double node[4];
-  for (int i = 0; i < grey->GetSize(); ++i)
-  {
-    grey->GetNodeValue(i, node); // x, value, midpoint, sharpness
-    ctf->AddRGBPoint(node[0], node[1], node[1], node[1], node[2], node[3]);
-  }
-  ctf->SetClamping(grey->GetClamping());
-  auto copy = vtkSmartPointer<vtkVolumeProperty>::New();
-  copy->SetColor(0, ctf);
-  copy->SetScalarOpacity(0, p->GetScalarOpacity(0));
-  copy->SetScalarOpacityUnitDistance(0, p->GetScalarOpacityUnitDistance(0));
-  return copy;
 }
 
 // Moves `cam` into the data's coordinates (the inverse of the volume's matrix, a rotation times
@@ -352,7 +324,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   try
   {
-    s.tf = art::TransferFunction::FromVTK(ColourProperty(vol->GetProperty()));
+    s.tf = art::TransferFunction::FromVTK(vol->GetProperty());
   }
   catch (const art::Error& e)
   {
