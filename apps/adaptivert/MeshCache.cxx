@@ -3,6 +3,7 @@
 #ifdef ART_HAVE_Reduction
 #include "AtomicFile.h"
 #include "Error.h"
+#include "Subprocess.h"
 
 #include <dlfcn.h>
 
@@ -152,7 +153,7 @@ MeshCache::MeshCache(const std::string& dir, const art::VoxelVolume& v, const ar
   {
     k << " " << n.first << ":" << n.second;
   }
-  k << "\ntool " << FileOf(reinterpret_cast<const void*>(&FileStamp)) << " "
+  k << "\ntool " << FileStamp(SelfExecutable()) << " "
     << FileOf(reinterpret_cast<const void*>(&art::TetReducer::CoarseGrid));
   Key = k.str();
   Hash128 kh;
