@@ -37,7 +37,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <sstream>
 #include <vector>
@@ -195,45 +194,6 @@ art::RenderSettings MakeSettings(const cli::Options& o, art::TransferFunction tf
   return s;
 }
 
-// Bytes the system can still give this process (Linux MemAvailable), 0 when unknown.
-double AvailableMemory()
-{
-  std::ifstream in("/proc/meminfo");
-  std::string key;
-  double kb = 0;
-  while (in >> key >> kb)
-  {
-    if (key == "MemAvailable:")
-    {
-      return kb * 1024.0;
-    }
-    in.ignore(256, '\n');
-  }
-  return 0;
-}
-
-// Full-resolution tets take about 100 bytes each (5 per voxel cell, with their links and planes;
-// 97-103 B measured on the CT heads): a volume whose tets do not fit is refused up front with the
-// way out, rather than killed by the system half-way or stopped by a bare "out of memory".
-void RequireMemoryForFullTets(vtkImageData* volume, const std::string& input)
-{
-  const int* d = volume->GetDimensions();
-  const double tets = 5.0 * std::max(d[0] - 1, 1) * std::max(d[1] - 1, 1) * std::max(d[2] - 1, 1);
-  const double need = 100.0 * tets, have = AvailableMemory();
-  if (have > 0 && need > have)
-  {
-    char what[256];
-    std::snprintf(what, sizeof what,
-      "its full-resolution tets (%d x %d x %d voxels, %.0f million tets) need about %.1f GB of memory and %.1f GB "
-      "are available",
-      d[0], d[1], d[2], tets / 1e6, need / 1e9, have / 1e9);
-    std::ostringstream ss;
-    ss << what << ": reduce it first with --tets N (e.g. --tets 1%) or --max-error E, or render the voxels with "
-                  "--reference";
-    throw art::Error(ss.str(), input);
-  }
-}
-
 int Run(const cli::Options& o, const std::string& input)
 {
   const cli::View view = cli::ViewFromOptions(o);
@@ -352,7 +312,6 @@ int Run(const cli::Options& o, const std::string& input)
       }
       else
       {
-        RequireMemoryForFullTets(volume, input);
         mesh = art::TetMesh::FromImage(volume, input);
         meshLabel = "full-resolution tets (5 per voxel cell)";
       }
