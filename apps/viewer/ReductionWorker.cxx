@@ -6,9 +6,11 @@
 
 namespace view
 {
-ReductionWorker::ReductionWorker(art::VoxelVolume volume, std::vector<long long> budgets)
+ReductionWorker::ReductionWorker(
+  art::VoxelVolume volume, std::vector<long long> budgets, art::ReducerOptions options)
   : Volume(std::move(volume))
   , Budgets(std::move(budgets))
+  , Options(std::move(options))
   , Prog([this](double f, const std::string&) { this->Fraction = f; })
 {
 }
@@ -22,6 +24,17 @@ ReductionWorker::~ReductionWorker()
   }
 }
 
+art::ReducerOptions ReductionWorker::ShowingWith(const art::TransferFunction& tf)
+{
+  art::ReducerOptions opt;
+  for (const auto& n : tf.Nodes())
+  {
+    opt.ScalarOpacity.emplace_back(n.s, n.alpha);
+  }
+  opt.RelocateVertices = true;
+  return opt;
+}
+
 void ReductionWorker::Start()
 {
   Begin = std::chrono::steady_clock::now();
@@ -30,7 +43,7 @@ void ReductionWorker::Start()
 
 void ReductionWorker::Run()
 {
-  art::ReducerOptions opt;
+  art::ReducerOptions opt = Options;
   opt.TargetTets = Budgets.back();
   opt.Levels.assign(Budgets.begin(), Budgets.end() - 1);
   std::string failure;

@@ -1,11 +1,12 @@
 // ReductionWorker: runs the least-squares tet reduction (art::TetReducer) of a volume in a
 // std::thread, so the viewer's window stays responsive. The main thread polls its progress and
-// takes the nested levels as they are made; no VTK object is touched off the main thread.
+// takes the levels as they are made; no VTK object is touched off the main thread.
 #ifndef art_ReductionWorker_h
 #define art_ReductionWorker_h
 
 #include "Progress.h"
 #include "TetReducer.h"
+#include "TransferFunction.h"
 #include "VoxelVolume.h"
 
 #include <atomic>
@@ -29,8 +30,13 @@ public:
     std::string Error;    ///< set when the run failed
   };
 
-  /// Takes the voxels (already converted on the main thread) and the budgets, ascending.
-  ReductionWorker(art::VoxelVolume volume, std::vector<long long> budgets);
+  /// Takes the voxels (already converted on the main thread), the budgets, ascending, and the
+  /// reducer's other settings (their TargetTets and Levels are the budgets').
+  ReductionWorker(art::VoxelVolume volume, std::vector<long long> budgets, art::ReducerOptions options = {});
+  /// The settings `adaptivert render` reduces with for a transfer function (composite, no
+  /// iso-surface): the fit weighted by its opacity, then the vertices relocated. The images are
+  /// 2-6 dB closer to the voxels' than a plain lattice fit at the same tets, for 4-5x the time.
+  static art::ReducerOptions ShowingWith(const art::TransferFunction& tf);
   /// Cancels a running reduction and waits for the thread.
   ~ReductionWorker();
   ReductionWorker(const ReductionWorker&) = delete;
@@ -47,6 +53,7 @@ private:
 
   art::VoxelVolume Volume;
   std::vector<long long> Budgets;
+  art::ReducerOptions Options;
   std::atomic<double> Fraction{ 0.0 };
   art::Progress Prog;
   mutable std::mutex Lock;

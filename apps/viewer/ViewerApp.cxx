@@ -69,7 +69,7 @@ ViewerApp::ViewerApp(ViewerOptions options)
   if (Impl->Scene.Image) // the voxel checks (NaN, 2-D, components) fail here, before any window
   {
     Impl->Worker = std::make_unique<ReductionWorker>(art::VolumeFromImage(Impl->Scene.Image, Impl->Opt.File),
-      Budgets(Impl->Opt, Impl->Scene.Image->GetNumberOfPoints()));
+      Budgets(Impl->Opt, Impl->Scene.Image->GetNumberOfPoints()), ReductionWorker::ShowingWith(Impl->Scene.Transfer));
   }
 #endif
 }

@@ -129,7 +129,7 @@ void ViewerApp::Internals::PollReduction()
   if (st.Finished)
   {
     ReductionFinished = true;
-    bar = st.Error.empty() ? "reduced: " + std::to_string(Scene.Levels.size()) + " nested levels from one run"
+    bar = st.Error.empty() ? "reduced: " + std::to_string(Scene.Levels.size()) + " levels from one run"
                            : "reduction failed: " + st.Error;
     char note[96];
     std::snprintf(note, sizeof note, ", %zu level%s reduced in %.2f s", Scene.Levels.size(),

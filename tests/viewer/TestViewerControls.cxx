@@ -225,35 +225,51 @@ TEST(ViewerScript, MalformedLinesNameFileAndLine)
   EXPECT_THROW(ReadScript(std::string(ART_TEST_OUTPUT) + "/no-such.script"), art::Error);
 }
 
-TEST(ReductionWorker, DeliversNestedLevelsWithProgress)
+namespace
 {
-  ReductionWorker w(Sphere(24), { 100, 400, 1500 });
-  w.Start();
+// Runs w to the end (failing the test after 60 s): its levels, its last status, and whether its
+// progress fraction never went back.
+struct WorkerRun
+{
   std::vector<art::ReducedMesh> levels;
-  double lastFraction = 0;
+  ReductionWorker::Status status;
   bool monotone = true;
+};
+WorkerRun RunToEnd(ReductionWorker& w)
+{
+  w.Start();
+  WorkerRun run;
+  double lastFraction = 0;
   const auto t0 = std::chrono::steady_clock::now();
-  ReductionWorker::Status st;
   do
   {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    st = w.Poll();
-    monotone &= st.Fraction >= lastFraction;
-    lastFraction = st.Fraction;
+    run.status = w.Poll();
+    run.monotone &= run.status.Fraction >= lastFraction;
+    lastFraction = run.status.Fraction;
     for (auto& m : w.TakeLevels())
     {
-      levels.push_back(std::move(m));
+      run.levels.push_back(std::move(m));
     }
-    ASSERT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 60.0);
-  } while (!st.Finished);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 60.0);
+  } while (!run.status.Finished);
   for (auto& m : w.TakeLevels())
   {
-    levels.push_back(std::move(m));
+    run.levels.push_back(std::move(m));
   }
-  EXPECT_TRUE(st.Error.empty()) << st.Error;
-  EXPECT_TRUE(monotone);
-  EXPECT_DOUBLE_EQ(st.Fraction, 1.0);
-  EXPECT_EQ(st.LevelsReady, 3);
+  EXPECT_TRUE(run.status.Error.empty()) << run.status.Error;
+  return run;
+}
+} // namespace
+
+TEST(ReductionWorker, DeliversNestedLevelsWithProgress)
+{
+  ReductionWorker w(Sphere(24), { 100, 400, 1500 });
+  const WorkerRun run = RunToEnd(w);
+  const auto& levels = run.levels;
+  EXPECT_TRUE(run.monotone);
+  EXPECT_DOUBLE_EQ(run.status.Fraction, 1.0);
+  EXPECT_EQ(run.status.LevelsReady, 3);
   ASSERT_EQ(levels.size(), 3u);
   const long long budgets[] = { 100, 400, 1500 };
   for (int i = 0; i < 3; ++i)
@@ -262,6 +278,27 @@ TEST(ReductionWorker, DeliversNestedLevelsWithProgress)
     EXPECT_LT(levels[i].NumberOfTets(), budgets[i] * 1.25);
   }
   EXPECT_GT(levels[0].Rms, levels[2].Rms); // finer levels fit better
+}
+
+// The viewer reduces as `render` does: weighted by the transfer function's opacity (here a shell
+// at distance 6-8 of the sphere field), then relocated, which fits that shell better than the
+// weighted lattice fit at the same tets. Unweighted options (the viewer before) gave plain levels.
+TEST(ReductionWorker, ReducesForTheTransferFunctionShown)
+{
+  using Node = art::TransferFunction::Node;
+  const art::TransferFunction tf({ Node{ 5, { 1, 1, 1 }, 0, 0 }, Node{ 6, { 1, 1, 1 }, 0.8, 0 },
+    Node{ 8, { 1, 1, 1 }, 0.8, 0 }, Node{ 9, { 1, 1, 1 }, 0, 0 } });
+  const art::ReducerOptions shown = ReductionWorker::ShowingWith(tf);
+  art::ReducerOptions lattice = shown;
+  lattice.RelocateVertices = false;
+  ReductionWorker a(Sphere(24), { 800 }, shown), b(Sphere(24), { 800 }, lattice);
+  const auto relocated = RunToEnd(a).levels, onLattice = RunToEnd(b).levels;
+  ASSERT_EQ(relocated.size(), 1u);
+  ASSERT_EQ(onLattice.size(), 1u);
+  EXPECT_TRUE(relocated[0].Weighted);
+  EXPECT_EQ(relocated[0].NumberOfTets(), onLattice[0].NumberOfTets());
+  EXPECT_LT(relocated[0].WeightedRms, 0.9 * onLattice[0].WeightedRms)
+    << relocated[0].WeightedRms << " vs " << onLattice[0].WeightedRms;
 }
 
 TEST(ReductionWorker, DestroyingCancelsPromptly)
