@@ -38,6 +38,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <iomanip>
 #include <sstream>
 #include <vector>
 
@@ -290,7 +291,8 @@ int Run(const cli::Options& o, const std::string& input)
         }
         mesh = cli::ToTetMesh(r);
         std::ostringstream ss;
-        ss << "adaptive tets (" << (r.Weighted ? "opacity-weighted " : "") << "least-squares reduction"
+        ss << std::setprecision(4) // errors to four digits (87.34 HU); counts are integers
+           << "adaptive tets (" << (r.Weighted ? "opacity-weighted " : "") << "least-squares reduction"
            << (ro.RelocateVertices ? ", vertices relocated" : "")
            << (ro.ClampToVoxels ? ", clamped to the voxel range" : "") << ", RMS error "
            << r.Rms << ", max " << r.Max;
