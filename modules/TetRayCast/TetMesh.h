@@ -39,8 +39,8 @@ public:
   /// the face diagonals match), point scalars = the voxel values (component 0).
   static TetMesh FromImage(vtkImageData* image, const std::string& file = {});
   /// Throws art::Error naming `file` when full-resolution tets would pass 2^29 or need more than
-  /// 80% of machineBytes (FromImage passes the machine's memory; 0 = unknown, not checked).
-  static void CheckFullResolutionFits(long long tets, double machineBytes, const std::string& file);
+  /// 90% of availableBytes (FromImage passes art::AvailableMemoryBytes(); 0 = unknown, not checked).
+  static void CheckFullResolutionFits(long long tets, double availableBytes, const std::string& file);
 
   /// Any vtkUnstructuredGrid with point scalars (the active ones, or `array` by name). Cells
   /// other than tets are tetrahedralised first (vtkDataSetTriangleFilter), cells of lower

@@ -3,6 +3,7 @@
 // unused and duplicate points removed), with the checks that name the file.
 #include "TetMesh.h"
 #include "ArrayChoice.h"
+#include "AvailableMemory.h"
 
 #include "Error.h"
 
@@ -26,11 +27,9 @@
 #include <numeric>
 #include <tuple>
 
-#include <unistd.h>
-
 namespace art
 {
-void TetMesh::CheckFullResolutionFits(long long tets, double machineBytes, const std::string& file)
+void TetMesh::CheckFullResolutionFits(long long tets, double availableBytes, const std::string& file)
 {
   if (tets >= (1LL << 29))
   {
@@ -39,15 +38,16 @@ void TetMesh::CheckFullResolutionFits(long long tets, double machineBytes, const
       file);
   }
   // About 160 bytes per tet with its share of the vertices (measured: 660 MB for the 4.3 M tets of
-  // the 128 x 128 x 54 CT). Past the machine's memory the build would be killed without a word.
+  // the 128 x 128 x 54 CT). Past the memory available the build would be killed without a word;
+  // a tenth of it is left for the rest of the run.
   const double need = 160.0 * tets;
-  if (machineBytes > 0 && need > 0.8 * machineBytes)
+  if (availableBytes > 0 && need > 0.9 * availableBytes)
   {
     char msg[200];
     std::snprintf(msg, sizeof msg,
-      "full-resolution tets of this volume (%lld) need about %.3g GB, more than this machine's %.3g GB allows; "
+      "full-resolution tets of this volume (%lld) need about %.3g GB, more than the %.3g GB of memory available; "
       "reduce it first (--tets N or --max-error E)",
-      tets, need / 1e9, machineBytes / 1e9);
+      tets, need / 1e9, availableBytes / 1e9);
     throw Error(msg, file);
   }
 }
@@ -79,8 +79,7 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
       file);
   }
   const long long nt = 5 * (d[0] - 1LL) * (d[1] - 1) * (d[2] - 1);
-  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
-  CheckFullResolutionFits(nt, pages > 0 && pageSize > 0 ? double(pages) * pageSize : 0.0, file);
+  CheckFullResolutionFits(nt, AvailableMemoryBytes(), file);
   std::vector<Vec3> pts(np);
   std::vector<double> val(np);
   const int* e = image->GetExtent(); // indices start at the extent's first corner
