@@ -1,5 +1,6 @@
 #include "ReducerVTK.h"
 
+#include "AvailableMemory.h"
 #include "Error.h"
 
 #include <vtkCellArray.h>
@@ -18,6 +19,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace art
@@ -95,6 +97,18 @@ VoxelVolume VolumeFromImage(vtkImageData* image, const std::string& file)
   const int type = s->GetDataType();
   v.DoubleValues = type == VTK_DOUBLE || type == VTK_LONG_LONG || type == VTK_UNSIGNED_LONG_LONG ||
     type == VTK_LONG || type == VTK_UNSIGNED_LONG || type == VTK_ID_TYPE || type == VTK_INT || type == VTK_UNSIGNED_INT;
+  // The reducer's own copy of the samples; TetReducer::Run checks the rest of what it needs.
+  const double copyBytes = (v.DoubleValues ? 8.0 : 4.0) * double(n), available = AvailableMemoryBytes();
+  if (available > 0 && copyBytes > 0.9 * available)
+  {
+    char msg[400];
+    std::snprintf(msg, sizeof msg,
+      "reducing this volume of %d x %d x %d = %lld voxels needs about %.3g GB for its samples alone, more than "
+      "the %.3g GB of memory available; crop or resample it first (e.g. vtkImageResample, ParaView's Resample "
+      "To Image or Extract Subset)",
+      v.Dims[0], v.Dims[1], v.Dims[2], n, copyBytes / 1e9, available / 1e9);
+    throw Error(msg, file);
+  }
   if (v.DoubleValues)
   {
     v.Double.resize(static_cast<size_t>(n));
@@ -118,6 +132,7 @@ VoxelVolume VolumeFromImage(vtkImageData* image, const std::string& file)
       }
     }
   }
+  v.File = file;
   v.Validate(file);
   return v;
 }

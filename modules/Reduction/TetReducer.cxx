@@ -1,5 +1,6 @@
 #include "TetReducer.h"
 
+#include "AvailableMemory.h"
 #include "BisectionMesh.h"
 #include "EdgeSplitRefiner.h"
 #include "Error.h"
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <memory>
 #include <cmath>
 #include <numeric>
@@ -130,6 +132,40 @@ ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const st
 }
 } // namespace
 
+double TetReducer::MemoryNeeded(long long voxels) const
+{
+  long long tets = Opt.TargetTets;
+  for (long long b : Opt.Levels)
+  {
+    tets = std::max(tets, b);
+  }
+  // Refinement ends at the full-resolution tets, 5 a voxel cell.
+  tets = std::min(tets, 5 * std::max(voxels, 0LL));
+  const double perTet = Opt.RelocateVertices ? 570.0 : 350.0;
+  const double perVoxel = Opt.ScalarOpacity.empty() ? 0.0 : 28.0;
+  return perTet * double(tets) + perVoxel * double(voxels);
+}
+
+void TetReducer::CheckMemory(const VoxelVolume& volume, double availableBytes) const
+{
+  const long long voxels = volume.NumberOfVoxels();
+  const double need = MemoryNeeded(voxels);
+  if (availableBytes <= 0 || need <= 0.9 * availableBytes)
+  {
+    return;
+  }
+  char msg[600];
+  std::snprintf(msg, sizeof msg,
+    "reducing this volume of %d x %d x %d = %lld voxels%s needs about %.3g GB more, more than the %.3g GB of "
+    "memory available; crop or resample it first (e.g. vtkImageResample, ParaView's Resample To Image or "
+    "Extract Subset)%s",
+    volume.Dims[0], volume.Dims[1], volume.Dims[2], voxels,
+    Opt.ScalarOpacity.empty() ? "" : " weighted by a transfer function's opacity", need / 1e9, availableBytes / 1e9,
+    Opt.ScalarOpacity.empty() ? ", or ask for fewer tets"
+                              : ", or reduce it without a transfer function (28 bytes a voxel fewer)");
+  throw Error(msg, volume.File);
+}
+
 std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* progress,
   const std::function<void(const ReducedMesh&)>& onLevel) const
 {
@@ -159,6 +195,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   {
     throw Error("set a target tet count or a maximum error");
   }
+  CheckMemory(volume, AvailableMemoryBytes());
   // Without a tet budget the error bound alone decides, up to one tet per voxel (beyond that
   // nothing is reduced any more). A budget is capped at the full-resolution tetrahedrisation
   // (5 tets per voxel cell): refinement cannot go past it, and the progress is measured to it.

@@ -139,6 +139,17 @@ public:
   std::vector<ReducedMesh> Run(const VoxelVolume& volume, Progress* progress = nullptr,
     const std::function<void(const ReducedMesh&)>& onLevel = {}) const;
 
+  /// Bytes a run on `voxels` samples still allocates beyond them, from peak memory measured on
+  /// reduce (200^3 and 300^3 CTs, 80k and 800k tets): about 350 a tet of the largest budget (570
+  /// with RelocateVertices) and, with ScalarOpacity, 28 a voxel (the opacity weights, their
+  /// neighbourhood ranges and the fit's reweighing). An error bound alone counts no tets.
+  double MemoryNeeded(long long voxels) const;
+  /// Throws art::Error naming volume.File, its voxels and the memory needed and available, with
+  /// the way out, when MemoryNeeded passes 90% of availableBytes (0: unknown, not checked). Run
+  /// calls it with art::AvailableMemoryBytes() before allocating anything: a volume too large
+  /// was killed by the system half-way, or thrashed.
+  void CheckMemory(const VoxelVolume& volume, double availableBytes) const;
+
   /// Coarse box counts per axis for about `tets` Kuhn tets, shaped to the volume's aspect.
   static void CoarseGrid(const VoxelVolume& volume, long long tets, int cubes[3]);
 

@@ -18,6 +18,7 @@ struct VoxelVolume
   std::vector<double> Double; ///< the samples of double (or 64-bit integer) input
   bool DoubleValues = false;
   std::string Name = "scalars";
+  std::string File; ///< where the samples came from, for errors (may be empty)
   double Range[2] = { 0, 0 };
 
   long long NumberOfVoxels() const { return static_cast<long long>(Dims[0]) * Dims[1] * Dims[2]; }

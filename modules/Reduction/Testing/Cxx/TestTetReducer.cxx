@@ -491,3 +491,45 @@ TEST(TetReducer, TurnedAndShearedVolumesPassTheConformityCheck)
     EXPECT_FALSE(q.Valid());
   }
 }
+
+// A volume whose reduction would not fit in the memory available is refused before anything is
+// allocated, naming its file, voxels, the memory needed and available and the way out; it was
+// killed by the system half-way (a 1024^3 CT weighted by a transfer function needs ~34 GB).
+TEST(TetReducer, MemoryCheckRefusesAVolumeTooLargeForTheMachine)
+{
+  art::VoxelVolume big; // only its size and name count: no samples are allocated
+  big.Dims[0] = big.Dims[1] = big.Dims[2] = 1024;
+  big.File = "big.mha";
+  const long long voxels = 1LL << 30;
+  art::ReducerOptions plain;
+  plain.TargetTets = voxels / 100;
+  art::ReducerOptions weighted = plain;
+  weighted.ScalarOpacity = { { 0, 0 }, { 100, 1 } };
+  art::ReducerOptions relocated = plain;
+  relocated.RelocateVertices = true;
+  EXPECT_NEAR(art::TetReducer(plain).MemoryNeeded(voxels), 350.0 * plain.TargetTets, 1.0);
+  EXPECT_NEAR(art::TetReducer(weighted).MemoryNeeded(voxels), 350.0 * plain.TargetTets + 28.0 * voxels, 1.0);
+  EXPECT_GT(art::TetReducer(relocated).MemoryNeeded(voxels), art::TetReducer(plain).MemoryNeeded(voxels));
+  art::ReducerOptions levels = plain; // the largest of the levels counts
+  levels.Levels = { 1000, voxels / 10 };
+  EXPECT_NEAR(art::TetReducer(levels).MemoryNeeded(voxels), 350.0 * (voxels / 10), 1.0);
+
+  EXPECT_NO_THROW(art::TetReducer(plain).CheckMemory(big, 24e9));   // 3.8 GB of tets
+  EXPECT_NO_THROW(art::TetReducer(weighted).CheckMemory(big, 0.0)); // memory unknown
+  try
+  {
+    art::TetReducer(weighted).CheckMemory(big, 24e9);
+    FAIL() << "34 GB accepted with 24 GB available";
+  }
+  catch (const art::Error& e)
+  {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("big.mha: reducing this volume of 1024 x 1024 x 1024 = 1073741824 voxels weighted", 0), 0u)
+      << what;
+    EXPECT_NE(what.find("needs about 33.8 GB more, more than the 24 GB of memory available"), std::string::npos)
+      << what;
+    EXPECT_NE(what.find("vtkImageResample"), std::string::npos) << what;
+    EXPECT_NE(what.find("without a transfer function"), std::string::npos) << what;
+  }
+  EXPECT_THROW(art::TetReducer(plain).CheckMemory(big, 3e9), art::Error);
+}
