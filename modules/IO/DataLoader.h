@@ -35,7 +35,8 @@ ADAPTIVERTIO_EXPORT const char* KindName(DataKind k);
 /// "NAME:magnitude" or "NAME:N" (also X, Y, Z; ":magnitude" alone for the active scalars) takes
 /// a vector's magnitude or component N as one-component double scalars (art::SplitComponent).
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::string& array = {});
-/// For renderers: an art::Error naming `path` unless the volume's scalars have one component.
+/// For renderers and the reducer: an art::Error naming `path` unless the volume's scalars have one
+/// component and a magnitude they compute with (art::RequireComputableRange).
 ADAPTIVERTIO_EXPORT void RequireOneComponent(vtkImageData* volume, const std::string& path);
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path);
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path);

@@ -10,6 +10,7 @@
 #include "NiftiCheck.h"
 #include "NrrdCheck.h"
 #include "ReaderRun.h"
+#include "ValueMagnitude.h"
 #include "VolumePlacement.h"
 
 #include <vtkCellData.h>
@@ -429,6 +430,13 @@ void RequireOneComponent(vtkImageData* volume, const std::string& path)
         " have " + std::to_string(nc) + " components; one is needed (choose with --array " + ComponentHint(s) +
         ", or another array)",
       path);
+  }
+  // Values of 1e300 or 1e-310 reached the transfer function and the fit (a crash, 'RMS inf').
+  double r[2];
+  s->GetRange(r, 0);
+  if (std::isfinite(r[0]) && std::isfinite(r[1]))
+  {
+    RequireComputableRange(r[0], r[1], path);
   }
 }
 } // namespace art

@@ -1,6 +1,7 @@
 #include "VoxelVolume.h"
 
 #include "Error.h"
+#include "ValueMagnitude.h"
 
 #include <algorithm>
 #include <cmath>
@@ -57,6 +58,7 @@ void VoxelVolume::Validate(const std::string& file)
     lo = std::min(lo, v);
     hi = std::max(hi, v);
   }
+  RequireComputableRange(lo, hi, file); // squares of 1e300 were inf: 'RMS inf' and a coarse mesh
   Range[0] = lo;
   Range[1] = hi;
 }

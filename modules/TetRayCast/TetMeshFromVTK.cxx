@@ -6,6 +6,7 @@
 #include "AvailableMemory.h"
 
 #include "Error.h"
+#include "ValueMagnitude.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -105,6 +106,7 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
         "); rendering needs finite voxels: replace them first, e.g. with numpy.nan_to_num",
       file);
   }
+  RequireComputableRange(*std::min_element(val.begin(), val.end()), *std::max_element(val.begin(), val.end()), file);
   static const int five[5][4] = { { 0, 1, 2, 4 }, { 3, 1, 2, 7 }, { 5, 1, 4, 7 }, { 6, 2, 4, 7 }, { 1, 2, 4, 7 } };
   std::vector<std::array<int, 4>> tets;
   tets.reserve(5 * (d[0] - 1LL) * (d[1] - 1) * (d[2] - 1));
@@ -505,6 +507,8 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
   try
   {
     TetMesh mesh(std::move(pts), std::move(val), std::move(tets));
+    // Values of 1e300 or 1e-310 crashed the transfer function's table (range scaled to inf).
+    RequireComputableRange(mesh.ScalarRange(0), mesh.ScalarRange(1), file);
     if (fromVolume)
     {
       mesh.Range[0] = source[0];

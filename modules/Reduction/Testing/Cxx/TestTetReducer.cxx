@@ -533,3 +533,35 @@ TEST(TetReducer, MemoryCheckRefusesAVolumeTooLargeForTheMachine)
   }
   EXPECT_THROW(art::TetReducer(plain).CheckMemory(big, 3e9), art::Error);
 }
+
+// Values of 1e300 overflow the fit's squares: one error naming the file instead of a coarse mesh
+// with 'RMS inf' (vtkAdaptiveTetReducer and library callers reach here without the CLI's check).
+TEST(TetReducer, ValuesWhoseSquaresOverflowAreRefused)
+{
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(4, 4, 4);
+  vtkNew<vtkDoubleArray> s;
+  s->SetNumberOfTuples(64);
+  for (int i = 0; i < 64; ++i)
+  {
+    s->SetValue(i, i % 2 ? 1e300 : -1e300);
+  }
+  img->GetPointData()->SetScalars(s);
+  try
+  {
+    art::VolumeFromImage(img, "big.vti");
+    FAIL() << "values of 1e300 accepted";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("big.vti: the scalars' range -1e+300 .. 1e+300 reaches beyond 1e150"),
+      std::string::npos)
+      << e.what();
+  }
+  for (int i = 0; i < 64; ++i)
+  {
+    s->SetValue(i, i % 2 ? 1e150 : -1e150); // the largest that stays
+  }
+  s->Modified();
+  EXPECT_NO_THROW(art::VolumeFromImage(img, "big.vti"));
+}

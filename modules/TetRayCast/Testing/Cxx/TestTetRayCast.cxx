@@ -1229,3 +1229,29 @@ TEST(VoxelReference, NonFiniteVoxelsAreAnError)
       std::string::npos) << e.what();
   }
 }
+
+// Full-resolution tets of denormal voxels (1e-310) are refused with the way out: the transfer
+// function built over their range crashed (its table's scale, the range's inverse, was inf).
+TEST(TetMesh, DenormalVoxelsAreRefused)
+{
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(3, 3, 3);
+  vtkNew<vtkDoubleArray> s;
+  s->SetNumberOfTuples(27);
+  for (int i = 0; i < 27; ++i)
+  {
+    s->SetValue(i, 1e-310 * (1 + i));
+  }
+  img->GetPointData()->SetScalars(s);
+  try
+  {
+    TetMesh::FromImage(img, "tiny.vti");
+    FAIL() << "denormal voxels accepted";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("tiny.vti: the scalars' range 1e-310 .. 2.7e-309 lies below 1e-150"),
+      std::string::npos)
+      << e.what();
+  }
+}
