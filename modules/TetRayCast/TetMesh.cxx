@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdint>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <tuple>
 
@@ -38,10 +39,24 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
   }
   for (std::size_t i = 0; i < Points.size(); ++i)
   {
-    if (!IsFinite(Points[i]) || !std::isfinite(Values[i]))
+    if (!IsFinite(Points[i]))
     {
-      throw Error("point " + std::to_string(i) + " has a non-finite coordinate or scalar");
+      throw Error("point " + std::to_string(i) + " has a NaN or infinite coordinate");
     }
+  }
+  // A masked field (NaN outside a region, as simulations and ParaView's filters leave it): where,
+  // how many and what to do, not only an index into a mesh the user never numbered.
+  const auto notFinite = [](double v) { return !std::isfinite(v); };
+  const auto bad = std::find_if(Values.begin(), Values.end(), notFinite);
+  if (bad != Values.end())
+  {
+    const std::size_t i = bad - Values.begin();
+    const long long count = std::count_if(bad, Values.end(), notFinite);
+    char at[160];
+    std::snprintf(at, sizeof at, "x, y, z = %.6g, %.6g, %.6g", Points[i].x, Points[i].y, Points[i].z);
+    throw Error(std::to_string(count) + (count > 1 ? " points have" : " point has") + " a NaN or infinite scalar (the first at " +
+      at + "); rendering needs finite values: replace them (e.g. ParaView's Calculator, numpy.nan_to_num) or cut "
+      "those cells away (ParaView's Threshold)");
   }
   for (std::size_t t = 0; t < Tets.size(); ++t)
   {

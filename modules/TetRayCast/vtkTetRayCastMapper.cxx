@@ -148,6 +148,7 @@ struct vtkTetRayCastMapper::Internals
   vtkMTimeType MeshTime = 0;
   vtkDataSet* MeshInput = nullptr;
   std::string MeshArray;
+  bool MeshRefused = false; ///< the build for MeshInput, MeshTime and MeshArray failed (said once)
   std::vector<art::IsoSurface> Isos;
   std::vector<std::array<double, 4>> LastPlanes; ///< the last frame's clipping planes (engine coordinates)
   vtkSmartPointer<vtkImageData> Last = vtkSmartPointer<vtkImageData>::New();
@@ -268,8 +269,8 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   vtkMatrix4x4::Invert(engineToWorld, toData);
   // (Re)build the engine's arrays only when the data, the array or the matrix's linear part
   // changed; clipping planes cut the rays, not the mesh.
-  if (!this->Impl->Mesh || this->Impl->MeshInput != input || this->Impl->MeshTime < input->GetMTime() ||
-    this->Impl->MeshArray != key)
+  if ((!this->Impl->Mesh && !this->Impl->MeshRefused) || this->Impl->MeshInput != input ||
+    this->Impl->MeshTime < input->GetMTime() || this->Impl->MeshArray != key)
   {
     try
     {
@@ -294,14 +295,24 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
     catch (const art::Error& e)
     {
+      // Said once for this input: every frame (each camera move in ParaView) said it again.
       this->Impl->Caster.reset();
       this->Impl->Mesh.reset();
+      this->Impl->MeshInput = input;
+      this->Impl->MeshTime = input->GetMTime();
+      this->Impl->MeshArray = key;
+      this->Impl->MeshRefused = true;
       vtkErrorMacro(<< e.what());
       return;
     }
     this->Impl->MeshInput = input;
     this->Impl->MeshTime = input->GetMTime();
     this->Impl->MeshArray = key;
+    this->Impl->MeshRefused = false;
+  }
+  if (!this->Impl->Mesh)
+  {
+    return; // this input was refused, and said why, when it was built
   }
   // A frame's time, for AutoAdjustSampleDistances, leaves out (re)building the mesh.
   const auto frameStart = std::chrono::steady_clock::now();

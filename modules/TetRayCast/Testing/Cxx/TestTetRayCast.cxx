@@ -1255,3 +1255,37 @@ TEST(TetMesh, DenormalVoxelsAreRefused)
       << e.what();
   }
 }
+
+// A mesh's NaN point scalars (a masked simulation field) are counted and the first placed in the
+// world, with what to do; it said 'point 2 has a non-finite coordinate or scalar', an index into
+// the mesh as cleaned (unused points dropped, duplicates merged), not the file's.
+TEST(TetMesh, NaNPointScalarsAreCountedAndPlaced)
+{
+  vtkNew<vtkUnstructuredGrid> ug;
+  vtkNew<vtkPoints> pts;
+  const double p[6][3] = { { 9, 9, 9 }, { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 1, 1, 1 } };
+  vtkNew<vtkDoubleArray> s;
+  s->SetName("pressure");
+  for (int i = 0; i < 6; ++i)
+  {
+    pts->InsertNextPoint(p[i]);
+    s->InsertNextValue(i == 3 || i == 5 ? std::nan("") : i);
+  }
+  ug->SetPoints(pts);
+  ug->GetPointData()->SetScalars(s);
+  const vtkIdType a[4] = { 1, 2, 3, 4 }, b[4] = { 2, 3, 4, 5 };
+  ug->InsertNextCell(VTK_TETRA, 4, a);
+  ug->InsertNextCell(VTK_TETRA, 4, b);
+  try
+  {
+    TetMesh::FromVTK(ug, {}, nullptr, "flow.vtu");
+    FAIL() << "NaN scalars accepted";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("flow.vtu: 2 points have a NaN or infinite scalar (the first at x, y, z = 0, "
+                                         "1, 0); rendering needs finite values"),
+      std::string::npos)
+      << e.what();
+  }
+}
