@@ -4,6 +4,7 @@
 #include "AtomicFile.h"
 #include "DataLoader.h"
 #include "Error.h"
+#include "ValueMagnitude.h"
 #include "Json.h"
 #include "VolumePlacement.h"
 
@@ -208,6 +209,19 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
         Grouped(nan).c_str(), Grouped(inf).c_str());
     }
     j.Set("nan_values", nan).Set("infinite_values", inf);
+    // Values of 1e300 or 1e-310: render and reduce refuse them; say so where the range is shown.
+    if (s->GetNumberOfComponents() == 1 && std::isfinite(r[0]) && std::isfinite(r[1]))
+    {
+      try
+      {
+        art::RequireComputableRange(r[0], r[1], {});
+      }
+      catch (const art::Error& e)
+      {
+        Out(text, "  magnitude    %s\n", e.problem().c_str());
+        j.Set("magnitude_problem", e.problem());
+      }
+    }
     if (img->GetPointData()->GetNumberOfArrays() > 1)
     {
       Out(text, "  point data   %s (--array picks one)\n", ArrayList(img->GetPointData()).c_str());
