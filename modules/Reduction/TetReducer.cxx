@@ -166,6 +166,24 @@ void TetReducer::CheckMemory(const VoxelVolume& volume, double availableBytes) c
   throw Error(msg, volume.File);
 }
 
+void TetReducer::CheckGrowth(const VoxelVolume& volume, long long tets, long long next, double availableBytes) const
+{
+  // The whole next mesh, not only the tets added: its arrays grow by reallocation, the old copy
+  // alive beside the new (under a 1.2 GB cap, counting only the added tets ran out of memory).
+  const double need = (Opt.RelocateVertices ? 570.0 : 350.0) * double(std::max(0LL, next));
+  if (availableBytes <= 0 || need <= 0.9 * availableBytes)
+  {
+    return;
+  }
+  char msg[500];
+  std::snprintf(msg, sizeof msg,
+    "the error bound is not met at %lld tets, and refining to %lld would need about %.3g GB, more than the "
+    "%.3g GB of memory available; set a tet budget (--tets N) or a larger error bound, or crop or resample the "
+    "volume first",
+    tets, next, need / 1e9, availableBytes / 1e9);
+  throw Error(msg, volume.File);
+}
+
 std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* progress,
   const std::function<void(const ReducedMesh&)>& onLevel) const
 {
@@ -416,6 +434,10 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     const long long goal = bi < budgets.size() ? std::min(cap, budgets[bi]) : cap;
     const long long next = std::min(goal,
       std::max(nt + 1, static_cast<long long>(std::ceil(nt * (1.0 + growthTowards(nt, goal))))));
+    if (bi == budgets.size())
+    {
+      CheckGrowth(volume, nt, next, AvailableMemoryBytes()); // an error bound alone: no budget was checked
+    }
 
     std::vector<int> cand;
     const double minEdge2 = Opt.MinEdgeVoxels * Opt.MinEdgeVoxels;

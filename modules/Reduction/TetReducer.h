@@ -149,6 +149,11 @@ public:
   /// calls it with art::AvailableMemoryBytes() before allocating anything: a volume too large
   /// was killed by the system half-way, or thrashed.
   void CheckMemory(const VoxelVolume& volume, double availableBytes) const;
+  /// Under an error bound alone (no budget to check up front, up to a tet per voxel), Run calls
+  /// this before each refinement from `tets` to `next` tets: throws art::Error naming volume.File
+  /// and the way out (a --tets budget, a larger bound) when `next` tets (the arrays grow by copy)
+  /// would need more than 90% of availableBytes (0: unknown, not checked).
+  void CheckGrowth(const VoxelVolume& volume, long long tets, long long next, double availableBytes) const;
 
   /// Coarse box counts per axis for about `tets` Kuhn tets, shaped to the volume's aspect.
   static void CoarseGrid(const VoxelVolume& volume, long long tets, int cubes[3]);

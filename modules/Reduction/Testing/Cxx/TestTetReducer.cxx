@@ -565,3 +565,28 @@ TEST(TetReducer, ValuesWhoseSquaresOverflowAreRefused)
   s->Modified();
   EXPECT_NO_THROW(art::VolumeFromImage(img, "big.vti"));
 }
+
+// An error bound alone may refine up to a tet per voxel, which no up-front check can count: each
+// refinement's added tets are checked against the memory available, naming the way out.
+TEST(TetReducer, GrowthUnderAnErrorBoundIsChecked)
+{
+  art::VoxelVolume big;
+  big.Dims[0] = big.Dims[1] = big.Dims[2] = 1024;
+  big.File = "big.mha";
+  art::ReducerOptions bound;
+  bound.TargetError = 0.1;
+  EXPECT_NO_THROW(art::TetReducer(bound).CheckGrowth(big, 1000000, 1200000, 24e9)); // 0.42 GB
+  EXPECT_NO_THROW(art::TetReducer(bound).CheckGrowth(big, 100000000, 120000000, 0.0)); // memory unknown
+  try
+  {
+    art::TetReducer(bound).CheckGrowth(big, 40000000, 50000000, 16e9); // 17.5 GB
+    FAIL() << "17.5 GB accepted with 16 GB available";
+  }
+  catch (const art::Error& e)
+  {
+    EXPECT_EQ(std::string(e.what()),
+      "big.mha: the error bound is not met at 40000000 tets, and refining to 50000000 would need about 17.5 GB, "
+      "more than the 16 GB of memory available; set a tet budget (--tets N) or a larger error bound, or crop "
+      "or resample the volume first");
+  }
+}
