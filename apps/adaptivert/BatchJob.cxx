@@ -64,6 +64,18 @@ std::vector<std::string> OptionsToArgs(
   std::vector<std::string> args;
   for (const auto& [key, value] : s.items())
   {
+    if (!key.empty() && key[0] == '_')
+    {
+      continue; // free for comments, as everywhere in a job
+    }
+    // A key render does not know ({"name": "fine"}, "tet" for "tets") failed every frame, each
+    // after the job had started, with render's 'unknown option'.
+    if (!cli::IsRenderOption(key))
+    {
+      throw art::Error("setting '" + key + "' is not a render option (a setting's keys are render's long options, "
+                       "as 'adaptivert render --help' lists them; '_' keys are comments)",
+        file);
+    }
     // The batch gives every frame its own file, size and camera, and reads render's --json:
     // {"output": "x.png"} overwrote x.png beside the job, {"help": true} left no image yet
     // counted the frame as rendered.

@@ -28,6 +28,8 @@ std::vector<Renderer>& Renderers();
 /// False when only other kinds' renderers declare --option (--tets for a surface, --opacity for a
 /// volume); `render` refuses such options, and batch jobs leave them out of those frames.
 bool OptionAppliesTo(const std::string& option, art::DataKind kind);
+/// Whether `render` declares --option (its own, a renderer's or the common ones), by long name.
+bool IsRenderOption(const std::string& option);
 
 struct RendererRegistrar
 {

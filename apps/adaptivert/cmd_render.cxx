@@ -70,6 +70,19 @@ static bool VolumeOnly(const std::string& option)
   return only.count(option) > 0;
 }
 
+bool IsRenderOption(const std::string& option)
+{
+  const Command* render = FindCommand("render");
+  Options declared;
+  if (render && render->declare)
+  {
+    render->declare(declared);
+  }
+  AddCommonOptions(declared);
+  const auto& names = declared.Declared();
+  return std::find(names.begin(), names.end(), option) != names.end();
+}
+
 bool OptionAppliesTo(const std::string& option, art::DataKind kind)
 {
   if (kind == art::DataKind::Mesh && VolumeOnly(option))
