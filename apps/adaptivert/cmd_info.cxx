@@ -93,8 +93,24 @@ std::string ArrayList(vtkFieldData* fd)
       double r[2];
       da->GetRange(r, -1);
       char b[160];
-      std::snprintf(b, sizeof b, " [%s x%d, %s]", da->GetDataTypeAsString(), da->GetNumberOfComponents(),
-        Range(r[0], r[1], "..").c_str());
+      // VTK's range leaves NaN out: a masked field looked whole, and render then refused it.
+      long long bad = 0;
+      auto count = [&](const auto* v, vtkIdType n) {
+        for (vtkIdType k = 0; k < n; ++k)
+        {
+          bad += std::isfinite(v[k]) ? 0 : 1;
+        }
+      };
+      if (auto* f = vtkFloatArray::SafeDownCast(da))
+      {
+        count(f->GetPointer(0), f->GetNumberOfValues());
+      }
+      else if (auto* d = vtkDoubleArray::SafeDownCast(da))
+      {
+        count(d->GetPointer(0), d->GetNumberOfValues());
+      }
+      std::snprintf(b, sizeof b, " [%s x%d, %s%s%s]", da->GetDataTypeAsString(), da->GetNumberOfComponents(),
+        Range(r[0], r[1], "..").c_str(), bad > 0 ? ", NaN or infinite: " : "", bad > 0 ? Grouped(bad).c_str() : "");
       s += b;
     }
   }

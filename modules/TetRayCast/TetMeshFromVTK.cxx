@@ -357,11 +357,11 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
   // A surface or a line set saved as a grid has nothing to cast through: say what it holds.
   // Cells of lower dimension beside 3-D ones are left out, with a note.
   vtkIdType lower = 0;
+  bool low[256] = {}; // by cell type: of lower dimension than 3
   {
     vtkNew<vtkCellTypes> types;
     grid->GetCellTypes(types);
     bool anyLower = false;
-    bool low[256] = {};
     vtkNew<vtkGenericCell> cell;
     for (vtkIdType k = 0; k < types->GetNumberOfTypes(); ++k)
     {
@@ -401,6 +401,25 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
     }
     CheckOneComponent(cs, "cell", file);
     CheckLength(cs, "cell", ug->GetNumberOfCells(), file);
+    // A NaN cell (a masked or failed cell of a simulation) spread to its corners and was reported
+    // as points holding NaN, in a mesh whose points hold no data at all.
+    long long badCells = 0;
+    vtkIdType firstBad = -1;
+    for (vtkIdType c = 0; c < ug->GetNumberOfCells(); ++c)
+    {
+      if (!low[ug->GetCellType(c)] && !std::isfinite(cs->GetComponent(c, 0)))
+      {
+        firstBad = badCells++ == 0 ? c : firstBad;
+      }
+    }
+    if (badCells > 0)
+    {
+      throw Error("cell array '" + std::string(cs->GetName()) + "' holds NaN or infinite values in " +
+          std::to_string(badCells) + (badCells > 1 ? " cells" : " cell") + " (the first: cell " +
+          std::to_string(firstBad) + "); rendering needs finite values: replace them (e.g. ParaView's Calculator, "
+          "numpy.nan_to_num) or cut those cells away (ParaView's Threshold)",
+        file);
+    }
     vtkNew<vtkCellDataToPointData> toPoints;
     toPoints->SetInputData(ug);
     toPoints->ProcessAllArraysOff();
