@@ -20,6 +20,13 @@ void Store(const art::ImageMetricsResult& r, double& rmse, double& psnr, double&
   ssim = r.ssim;
   maxAbs = r.maxAbs;
 }
+
+// A failed comparison leaves no figures of an earlier one behind: RMSE 0 and SSIM 1 (the
+// defaults) or the last pair's figures read as a pass to a script that did not test the result.
+void Clear(double& rmse, double& psnr, double& ssim, double& maxAbs)
+{
+  rmse = psnr = ssim = maxAbs = std::nan("");
+}
 }
 
 bool vtkImageMetrics::Compare(vtkImageData* a, vtkImageData* b)
@@ -33,6 +40,7 @@ bool vtkImageMetrics::Compare(vtkImageData* a, vtkImageData* b)
   }
   catch (const art::Error& e)
   {
+    Clear(this->RMSE, this->PSNR, this->SSIM, this->MaxAbsDifference);
     this->ErrorMessage = e.what();
     return false;
   }
@@ -53,6 +61,7 @@ bool vtkImageMetrics::CompareFiles(const char* fileA, const char* fileB)
   }
   catch (const art::Error& e)
   {
+    Clear(this->RMSE, this->PSNR, this->SSIM, this->MaxAbsDifference);
     this->ErrorMessage = e.what();
     return false;
   }

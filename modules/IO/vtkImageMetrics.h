@@ -6,8 +6,8 @@
  * type's largest value (1/255 for unsigned char, 1/65535 for unsigned short), floating-point
  * values are taken as values in [0, 1]. Files are read as art::ReadImage reads them (PNG
  * through VTK; EXR, TIFF and others through OpenImageIO). After a successful Compare the
- * figures are available through the getters; on failure Compare returns false and
- * GetErrorMessage() says why.
+ * figures are available through the getters; on failure Compare returns false,
+ * GetErrorMessage() says why and the figures are NaN (as before any comparison).
  */
 #ifndef vtkImageMetrics_h
 #define vtkImageMetrics_h
@@ -15,6 +15,7 @@
 #include "AdaptiveRTIOModule.h"
 #include "vtkObject.h"
 
+#include <cmath>
 #include <string>
 
 class vtkImageData;
@@ -42,10 +43,10 @@ protected:
   vtkImageMetrics() = default;
   ~vtkImageMetrics() override = default;
 
-  double RMSE = 0.0;
-  double PSNR = 0.0;
-  double SSIM = 1.0;
-  double MaxAbsDifference = 0.0;
+  double RMSE = std::nan("");
+  double PSNR = std::nan("");
+  double SSIM = std::nan("");
+  double MaxAbsDifference = std::nan("");
   std::string ErrorMessage;
 
 private:

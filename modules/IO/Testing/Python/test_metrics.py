@@ -21,6 +21,7 @@ def constant_image(value, w=16, h=8):
 
 
 m = adaptivert.vtkImageMetrics()
+assert math.isnan(m.GetRMSE()) and math.isnan(m.GetSSIM()), (m.GetRMSE(), m.GetSSIM())  # nothing compared yet
 assert m.Compare(constant_image(0.25), constant_image(0.35)), m.GetErrorMessage()
 # Three of four channels differ by 0.1: RMSE = sqrt(3/4) * 0.1.
 expected = math.sqrt(0.75) * 0.1
@@ -28,6 +29,10 @@ assert abs(m.GetRMSE() - expected) < 1e-6, m.GetRMSE()
 assert abs(m.GetPSNR() - (-20 * math.log10(expected))) < 1e-4, m.GetPSNR()
 assert not m.Compare(constant_image(0.1, 4, 4), constant_image(0.1, 5, 4))
 assert "differ in size" in m.GetErrorMessage(), m.GetErrorMessage()
+# A failed comparison leaves no figures behind: the last pair's RMSE (or the defaults' 0 and SSIM 1)
+# read as a pass to a script that did not test Compare's result.
+assert all(math.isnan(v) for v in (m.GetRMSE(), m.GetPSNR(), m.GetSSIM(), m.GetMaxAbsDifference())), (
+    m.GetRMSE(), m.GetPSNR(), m.GetSSIM(), m.GetMaxAbsDifference())
 assert not m.CompareFiles("/nonexistent/a.png", "/nonexistent/b.png")
 assert "/nonexistent/a.png" in m.GetErrorMessage()
 # A NaN pixel (a float EXR can hold one) is an error, not PSNR "identical".
