@@ -41,6 +41,10 @@ public:
   /// Throws art::Error naming `file` when full-resolution tets would pass 2^29 or need more than
   /// 90% of availableBytes (FromImage passes art::AvailableMemoryBytes(); 0 = unknown, not checked).
   static void CheckFullResolutionFits(long long tets, double availableBytes, const std::string& file);
+  /// Throws art::Error naming `file` when a mesh's cells, about `tets` once tetrahedralised, would
+  /// need more than 90% of availableBytes (200 bytes a tet: the triangle filter's output and the
+  /// engine's mesh; FromVTK passes art::AvailableMemoryBytes(); 0 = unknown, not checked).
+  static void CheckMeshFits(long long tets, double availableBytes, const std::string& file);
 
   /// Any vtkUnstructuredGrid with point scalars (the active ones, or `array` by name). Cells
   /// other than tets are tetrahedralised first (vtkDataSetTriangleFilter), cells of lower

@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <numeric>
 #include <tuple>
 
@@ -48,6 +49,20 @@ void TetMesh::CheckFullResolutionFits(long long tets, double availableBytes, con
     std::snprintf(msg, sizeof msg,
       "full-resolution tets of this volume (%lld) need about %.3g GB, more than the %.3g GB of memory available; "
       "reduce it first (--tets N or --max-error E)",
+      tets, need / 1e9, availableBytes / 1e9);
+    throw Error(msg, file);
+  }
+}
+
+void TetMesh::CheckMeshFits(long long tets, double availableBytes, const std::string& file)
+{
+  const double need = 200.0 * tets;
+  if (availableBytes > 0 && need > 0.9 * availableBytes)
+  {
+    char msg[300];
+    std::snprintf(msg, sizeof msg,
+      "its cells make about %lld tets, which need about %.3g GB, more than the %.3g GB of memory available; "
+      "render a part of it first (e.g. ParaView's Extract Cells By Region, Clip or Threshold)",
       tets, need / 1e9, availableBytes / 1e9);
     throw Error(msg, file);
   }
@@ -437,6 +452,7 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
   // Only 3-D cells other than tets need tetrahedralising; lower cells beside tets (ParaView's
   // output often has some) are skipped below, not worth a pass of the triangle filter over every tet.
   vtkIdType solids = 0, tetCells = 0;
+  long long tetsAhead = 0; // tets once tetrahedralised: a hexahedron makes up to 6, a wedge 3
   {
     vtkNew<vtkGenericCell> cell;
     int dimension[256];
@@ -451,8 +467,17 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
       }
       tetCells += type == VTK_TETRA ? 1 : 0;
       solids += dimension[type] == 3 ? 1 : 0;
+      tetsAhead += dimension[type] != 3 ? 0
+        : type == VTK_TETRA                                  ? 1
+        : type == VTK_PYRAMID                                ? 2
+        : type == VTK_WEDGE                                  ? 3
+        : type == VTK_HEXAHEDRON || type == VTK_VOXEL        ? 6
+                                                             : 12; // quadratic and polyhedral cells
     }
   }
+  // A mesh too large for the memory left was killed by the system half-way through the triangle
+  // filter or the engine's arrays.
+  CheckMeshFits(tetsAhead, AvailableMemoryBytes(), file);
   if (tetCells < solids)
   {
     // The chosen array rides through as the active scalars.

@@ -1291,3 +1291,22 @@ TEST(TetMesh, NaNPointScalarsAreCountedAndPlaced)
       << e.what();
   }
 }
+
+// A mesh whose tets would not fit in the memory available is refused before the triangle filter
+// and the engine's arrays, naming the file, the tets and the way out.
+TEST(TetMesh, MeshMemoryGuard)
+{
+  EXPECT_NO_THROW(TetMesh::CheckMeshFits(6000000, 24e9, "flow.vtu")); // 1.2 GB
+  EXPECT_NO_THROW(TetMesh::CheckMeshFits(600000000, 0.0, "flow.vtu")); // memory unknown
+  try
+  {
+    TetMesh::CheckMeshFits(150000000, 24e9, "flow.vtu"); // 25 million hexahedra: 30 GB
+    FAIL() << "30 GB of tets accepted with 24 GB available";
+  }
+  catch (const Error& e)
+  {
+    EXPECT_EQ(std::string(e.what()), "flow.vtu: its cells make about 150000000 tets, which need about 30 GB, more than "
+                                     "the 24 GB of memory available; render a part of it first (e.g. ParaView's "
+                                     "Extract Cells By Region, Clip or Threshold)");
+  }
+}
