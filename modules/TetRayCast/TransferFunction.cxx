@@ -65,6 +65,17 @@ TransferFunction::TransferFunction(std::vector<Node> nodes, double unitDistance)
       N.push_back(n);
     }
   }
+  // Locate's table spreads the nodes' span over its buckets: a span of denormals (nodes 1e-310
+  // apart) gave an infinite scale and negative buckets (a crash), one past 1e308 a NaN scale.
+  const double span = N.back().s - N.front().s;
+  if (N.size() >= 2 && !(std::isfinite(span) && std::isfinite(Buckets / span)))
+  {
+    std::ostringstream ss;
+    ss << "transfer function's control points span " << N.front().s << " .. " << N.back().s
+       << (std::isfinite(span) ? ", too close together to tell apart" : ", too wide a span")
+       << " in double precision; rescale the data and the transfer function";
+    throw Error(ss.str());
+  }
   BuildTable();
 }
 
@@ -417,6 +428,22 @@ TransferFunction FromParaViewPreset(std::istream& in, const std::string& path)
 } // namespace
 
 TransferFunction TransferFunction::FromFile(const std::string& path)
+{
+  try
+  {
+    return ReadFile(path);
+  }
+  catch (const Error& e)
+  {
+    if (e.file().empty()) // the nodes' own checks (the constructor's) do not know the file
+    {
+      throw Error(e.problem(), path);
+    }
+    throw;
+  }
+}
+
+TransferFunction TransferFunction::ReadFile(const std::string& path)
 {
   std::ifstream in(path);
   if (!in)

@@ -140,6 +140,7 @@ public:
 
 private:
   void BuildTable();
+  static TransferFunction ReadFile(const std::string& path); ///< FromFile, errors not yet naming it
 
   std::vector<Node> N;
   double Unit = 1.0;
