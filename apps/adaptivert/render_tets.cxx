@@ -464,8 +464,9 @@ int Run(const cli::Options& o, const std::string& input)
   }
   else
   {
-    std::printf("mesh         %s: %zu tets, %zu vertices (%.2f s)\n", meshLabel.c_str(), mesh.NumberOfTets(),
-      mesh.NumberOfPoints(), buildSeconds);
+    std::printf("mesh         %s: %zu tet%s, %zu vert%s (%.2f s)\n", meshLabel.c_str(), mesh.NumberOfTets(),
+      mesh.NumberOfTets() == 1 ? "" : "s", mesh.NumberOfPoints(), mesh.NumberOfPoints() == 1 ? "ex" : "ices",
+      buildSeconds);
     std::printf("render       %d x %d, %s rule, ERT %g: %.3f s (%.2f Mrays/s), %.1f tets/ray, %.0f ns/tet "
                 "crossed per thread\n",
       view.width, view.height, settings.rule == art::RenderSettings::Rule::Exact ? "exact" : "trapezoid",
