@@ -64,6 +64,9 @@ public:
   /// stored), else of the data set's own.
   static double SampleSpacing(vtkDataSet* data, const TetMesh* mesh = nullptr);
   /// Preset with the unit distance PresetUnitDistance gives for `data` (built into `mesh`) and its range [lo, hi].
+  /// A range that looks like CT counts as CT only when the samples drawn (the mesh's, or the
+  /// data's active point scalars) are whole numbers or hold air (5% within 100 of -1000): a
+  /// simulation field spanning -1000 .. 1000 gets the grey ramp and fractions of its range.
   static TransferFunction PresetFor(const std::string& name, vtkDataSet* data, double lo, double hi,
     const TetMesh* mesh = nullptr);
   /// A text file, one node per line: "scalar r g b opacity" ('#' comments; optional first line
@@ -141,6 +144,8 @@ public:
 private:
   void BuildTable();
   static TransferFunction ReadFile(const std::string& path); ///< FromFile, errors not yet naming it
+  /// Preset, with `hu` saying whether the data are CT in Hounsfield units.
+  static TransferFunction Make(const std::string& name, double lo, double hi, double unitDistance, bool hu);
 
   std::vector<Node> N;
   double Unit = 1.0;

@@ -1142,6 +1142,37 @@ TEST(TransferFunction, PresetScalesWithTheSampleSpacing)
   EXPECT_EQ(TransferFunction::PresetUnitDistance(-1024, 3071, 5.0), 1.0);
 }
 
+// "auto" on a range that looks like Hounsfield units: a float simulation field of -997 .. 997 (no
+// whole values, 0.8% near -1000) gets the grey ramp, not CT colours; the same values rounded to
+// whole numbers (as a scanner stores them), or with a tenth of the samples at air, count as CT.
+TEST(TransferFunction, AutoTellsCTFromASignedField)
+{
+  auto field = [](bool whole, bool air) {
+    vtkNew<vtkImageData> v;
+    const int n = 24;
+    v->SetDimensions(n, n, n);
+    vtkNew<vtkFloatArray> a;
+    a->SetNumberOfTuples(static_cast<vtkIdType>(n) * n * n);
+    for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+    {
+      const double x = 0.05 * double(i % n), y = 0.05 * double((i / n) % n), z = 0.05 * double(i / (n * n));
+      double f = 997.5 * std::sin(6.0 * x + 0.3) * std::cos(4.0 * y) * std::cos(z + 0.2);
+      f = air && i % 10 == 0 ? -1000.25 : f;
+      a->SetValue(i, static_cast<float>(whole ? std::round(f) : f));
+    }
+    v->GetPointData()->SetScalars(a);
+    return v;
+  };
+  for (int k = 0; k < 3; ++k)
+  {
+    const auto v = field(k == 1, k == 2);
+    const double* r = v->GetPointData()->GetScalars()->GetRange();
+    ASSERT_TRUE(TransferFunction::LooksLikeHU(r[0], r[1]));
+    const auto tf = TransferFunction::PresetFor("auto", v, r[0], r[1]);
+    EXPECT_EQ(tf.Nodes().size(), k == 0 ? 2u : 8u) << "case " << k; // grey-ramp has 2 nodes, ct-skin-bone 8
+  }
+}
+
 // Spacing of data other than images: the reducer's source_spacing field, else the mean point spacing
 // over the non-flat axes of the bounds.
 TEST(TransferFunction, SampleSpacingOfMeshes)
