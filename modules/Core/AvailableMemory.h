@@ -12,6 +12,13 @@ namespace art
 /// memory limit less its usage, and RLIMIT_AS less the address space in use; the machine's total
 /// physical memory when none of these is known; 0 when even that is unknown.
 ADAPTIVERTCORE_EXPORT double AvailableMemoryBytes();
+
+/// Would work needing `needBytes` overrun `availableBytes` (AvailableMemoryBytes; 0 = unknown,
+/// never)? A tenth of what is available is left for the rest of the run.
+inline bool ExceedsAvailableMemory(double needBytes, double availableBytes)
+{
+  return availableBytes > 0 && needBytes > 0.9 * availableBytes;
+}
 } // namespace art
 
 #endif

@@ -60,7 +60,7 @@ void CheckImageFits(vtkAlgorithm* reader, const std::string& path)
   }
   const double bytes = voxels * std::max(1, components) * std::max(1, vtkDataArray::GetDataTypeSize(type));
   const double available = AvailableMemoryBytes();
-  if (available > 0 && bytes > 0.9 * available)
+  if (ExceedsAvailableMemory(bytes, available))
   {
     char msg[400];
     std::snprintf(msg, sizeof msg,

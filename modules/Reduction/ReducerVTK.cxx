@@ -99,7 +99,7 @@ VoxelVolume VolumeFromImage(vtkImageData* image, const std::string& file)
     type == VTK_LONG || type == VTK_UNSIGNED_LONG || type == VTK_ID_TYPE || type == VTK_INT || type == VTK_UNSIGNED_INT;
   // The reducer's own copy of the samples; TetReducer::Run checks the rest of what it needs.
   const double copyBytes = (v.DoubleValues ? 8.0 : 4.0) * double(n), available = AvailableMemoryBytes();
-  if (available > 0 && copyBytes > 0.9 * available)
+  if (ExceedsAvailableMemory(copyBytes, available))
   {
     char msg[400];
     std::snprintf(msg, sizeof msg,

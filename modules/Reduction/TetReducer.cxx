@@ -150,7 +150,7 @@ void TetReducer::CheckMemory(const VoxelVolume& volume, double availableBytes) c
 {
   const long long voxels = volume.NumberOfVoxels();
   const double need = MemoryNeeded(voxels);
-  if (availableBytes <= 0 || need <= 0.9 * availableBytes)
+  if (!ExceedsAvailableMemory(need, availableBytes))
   {
     return;
   }
@@ -171,7 +171,7 @@ void TetReducer::CheckGrowth(const VoxelVolume& volume, long long tets, long lon
   // The whole next mesh, not only the tets added: its arrays grow by reallocation, the old copy
   // alive beside the new (under a 1.2 GB cap, counting only the added tets ran out of memory).
   const double need = (Opt.RelocateVertices ? 570.0 : 350.0) * double(std::max(0LL, next));
-  if (availableBytes <= 0 || need <= 0.9 * availableBytes)
+  if (!ExceedsAvailableMemory(need, availableBytes))
   {
     return;
   }

@@ -40,10 +40,9 @@ void TetMesh::CheckFullResolutionFits(long long tets, double availableBytes, con
       file);
   }
   // About 160 bytes per tet with its share of the vertices (measured: 660 MB for the 4.3 M tets of
-  // the 128 x 128 x 54 CT). Past the memory available the build would be killed without a word;
-  // a tenth of it is left for the rest of the run.
+  // the 128 x 128 x 54 CT). Past the memory available the build would be killed without a word.
   const double need = 160.0 * tets;
-  if (availableBytes > 0 && need > 0.9 * availableBytes)
+  if (ExceedsAvailableMemory(need, availableBytes))
   {
     char msg[200];
     std::snprintf(msg, sizeof msg,
@@ -57,7 +56,7 @@ void TetMesh::CheckFullResolutionFits(long long tets, double availableBytes, con
 void TetMesh::CheckMeshFits(long long tets, double availableBytes, const std::string& file)
 {
   const double need = 200.0 * tets;
-  if (availableBytes > 0 && need > 0.9 * availableBytes)
+  if (ExceedsAvailableMemory(need, availableBytes))
   {
     char msg[300];
     std::snprintf(msg, sizeof msg,
