@@ -1,6 +1,6 @@
 """The set-up the vtkTetRayCastMapper Python tests share: a display check, a tetrahedralised box of
 constant value, a constant-colour volume property, an offscreen window around a mapper, and the
-window's pixels as a numpy array. Each test imports it from its own folder (the script's folder is
+window's pixels as a numpy array, and the messages a mapper sends. Each test imports it from its own folder (the script's folder is
 first on sys.path) and keeps its checks to itself.
 """
 import os
@@ -18,7 +18,10 @@ def require_display():
 
 require_display()
 
+from vtkmodules.util.misc import calldata_type  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from vtkmodules.util.vtkConstants import VTK_STRING  # noqa: E402
+from vtkmodules.vtkCommonCore import vtkCommand  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction  # noqa: E402
 from vtkmodules.vtkFiltersGeneral import vtkDataSetTriangleFilter  # noqa: E402
 from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,  # noqa: E402
@@ -97,3 +100,17 @@ def grab(win):
     out = grabber.GetOutput()
     width, height = out.GetDimensions()[:2]
     return vtk_to_numpy(out.GetPointData().GetScalars()).reshape(height, width, 3)
+
+
+def messages(mapper, *events):
+    """A list that collects the text of every one of `events` (default: vtkCommand.ErrorEvent)
+    the mapper fires, in order."""
+    texts = []
+
+    @calldata_type(VTK_STRING)
+    def collect(obj, event, text):
+        texts.append(text)
+
+    for event in events or (vtkCommand.ErrorEvent,):
+        mapper.AddObserver(event, collect)
+    return texts

@@ -6,14 +6,12 @@ repeated as marked ghosts, must show the closed-form composite of the box once o
 ghosts overlapped the cells they copy and the mapper refused the mesh. Needs a display (skips
 with exit 77).
 """
-from mapper_scene import box_tets, constant_property, grab, look_down_z, offscreen_scene, require_display
+from mapper_scene import box_tets, constant_property, grab, look_down_z, messages, offscreen_scene, require_display
 
 require_display()
 
 import numpy as np
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.vtkConstants import VTK_STRING
-from vtkmodules.vtkCommonCore import vtkCommand, vtkIdList, vtkUnsignedCharArray
+from vtkmodules.vtkCommonCore import vtkIdList, vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes, vtkUnstructuredGrid
 
 import adaptivert
@@ -43,15 +41,7 @@ prop = constant_property(colour, 0.5, unit=1.0)
 mapper = adaptivert.vtkTetRayCastMapper()
 mapper.SetInputData(piece)
 mapper.AutoAdjustSampleDistancesOff()
-errors = []
-
-
-@calldata_type(VTK_STRING)
-def on_error(obj, event, text):
-    errors.append(text)
-
-
-mapper.AddObserver(vtkCommand.ErrorEvent, on_error)
+errors = messages(mapper)
 W = 80
 volume, ren, win = offscreen_scene(mapper, prop, W, W)
 look_down_z(ren, 1.5)

@@ -7,13 +7,9 @@ Needs a display (skips with exit 77).
 """
 import math
 
-from mapper_scene import box_tets, constant_property, grab, offscreen_scene, require_display
+from mapper_scene import box_tets, constant_property, grab, messages, offscreen_scene, require_display
 
 require_display()
-
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.vtkConstants import VTK_STRING
-from vtkmodules.vtkCommonCore import vtkCommand
 
 import adaptivert
 
@@ -26,15 +22,7 @@ prop = constant_property((1, 1, 1), 0.3)
 
 mapper = adaptivert.vtkTetRayCastMapper()
 mapper.SetInputData(box)
-errors = []
-
-
-@calldata_type(VTK_STRING)
-def on_error(obj, event, text):
-    errors.append(text)
-
-
-mapper.AddObserver(vtkCommand.ErrorEvent, on_error)
+errors = messages(mapper)
 volume, ren, win = offscreen_scene(mapper, prop, 32, 32)
 ren.ResetCamera()
 for _ in range(3):

@@ -5,12 +5,10 @@ does not follow them) and a warning must name each, once, however many frames ar
 unchanged default (gradient opacity 1 everywhere) is no news. An empty input (a threshold that
 keeps nothing) draws nothing without an error each frame. Needs a display (skips with exit 77).
 """
-from mapper_scene import box_tets, constant_property, offscreen_scene, require_display
+from mapper_scene import box_tets, constant_property, messages, offscreen_scene, require_display
 
 require_display()
 
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.util.vtkConstants import VTK_STRING
 from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction, vtkUnstructuredGrid
 
@@ -21,16 +19,7 @@ prop = constant_property((1, 1, 1), 0.3)
 
 mapper = adaptivert.vtkTetRayCastMapper()
 mapper.SetInputData(box)
-warnings = []
-
-
-@calldata_type(VTK_STRING)
-def on_warning(obj, event, text):
-    warnings.append(text)
-
-
-mapper.AddObserver(vtkCommand.WarningEvent, on_warning)
-mapper.AddObserver(vtkCommand.ErrorEvent, on_warning)
+warnings = messages(mapper, vtkCommand.WarningEvent, vtkCommand.ErrorEvent)
 volume, ren, win = offscreen_scene(mapper, prop, 32, 32)
 ren.ResetCamera()
 
