@@ -108,18 +108,8 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
         val[id] = s->GetComponent(id, 0);
       }
   // A voxel's own words (its index) rather than the mesh's "point N has a non-finite ...".
-  auto notFinite = [](double v) { return !std::isfinite(v); };
-  const auto bad = std::find_if(val.begin(), val.end(), notFinite);
-  if (bad != val.end())
-  {
-    const long long id = bad - val.begin(), count = std::count_if(bad, val.end(), notFinite);
-    const long long i = id % d[0], j = (id / d[0]) % d[1], k = id / (static_cast<long long>(d[0]) * d[1]);
-    throw Error(std::to_string(count) + " voxel" + (count > 1 ? "s hold" : " holds") +
-        " NaN or infinite values (the first at i, j, k = " + std::to_string(e[0] + i) + ", " +
-        std::to_string(e[2] + j) + ", " + std::to_string(e[4] + k) +
-        "); rendering needs finite voxels: replace them first, e.g. with numpy.nan_to_num",
-      file);
-  }
+  const int first[3] = { e[0], e[2], e[4] };
+  RequireFiniteVoxels(val, d, first, file);
   RequireComputableRange(*std::min_element(val.begin(), val.end()), *std::max_element(val.begin(), val.end()), file);
   static const int five[5][4] = { { 0, 1, 2, 4 }, { 3, 1, 2, 7 }, { 5, 1, 4, 7 }, { 6, 2, 4, 7 }, { 1, 2, 4, 7 } };
   std::vector<std::array<int, 4>> tets;

@@ -4,6 +4,7 @@
 #include "ExactIntegrator.h"
 #include "ParallelTiles.h"
 #include "Progress.h"
+#include "ValueMagnitude.h"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -16,36 +17,16 @@
 
 namespace art
 {
-namespace
-{
-// As TetMesh::FromImage says it, by the index in the image's extent (render --reference said
-// 'a NaN or infinite value (voxel 0)', a flat index).
-void RequireFiniteVoxels(const std::vector<double>& v, const int d[3], const int start[3])
-{
-  const auto notFinite = [](double x) { return !std::isfinite(x); };
-  const auto bad = std::find_if(v.begin(), v.end(), notFinite);
-  if (bad != v.end())
-  {
-    const long long id = bad - v.begin(), count = std::count_if(bad, v.end(), notFinite);
-    const long long i = id % d[0], j = (id / d[0]) % d[1], k = id / (static_cast<long long>(d[0]) * d[1]);
-    throw Error(std::to_string(count) + " voxel" + (count > 1 ? "s hold" : " holds") +
-      " NaN or infinite values (the first at i, j, k = " + std::to_string(start[0] + i) + ", " +
-      std::to_string(start[1] + j) + ", " + std::to_string(start[2] + k) +
-      "); rendering needs finite voxels: replace them first, e.g. with numpy.nan_to_num");
-  }
-}
-} // namespace
-
 VoxelReferenceCaster::VoxelReferenceCaster(std::vector<double> values, const int dims[3], const Vec3& origin,
-  const Vec3& spacing, TransferFunction tf)
+  const Vec3& spacing, TransferFunction tf, const int first[3])
   : V(std::move(values)), D{ dims[0], dims[1], dims[2] }, O(origin), H(spacing), TF(std::move(tf))
 {
   if (D[0] < 2 || D[1] < 2 || D[2] < 2 || V.size() != static_cast<std::size_t>(D[0]) * D[1] * D[2])
   {
     throw Error("reference caster needs at least 2 x 2 x 2 voxels");
   }
-  const int start[3] = { 0, 0, 0 };
-  RequireFiniteVoxels(V, D, start);
+  const int zero[3] = { 0, 0, 0 };
+  RequireFiniteVoxels(V, D, first ? first : zero, {});
   Box = Box3(O, O + Vec3((D[0] - 1) * H.x, (D[1] - 1) * H.y, (D[2] - 1) * H.z));
 }
 
@@ -71,12 +52,8 @@ VoxelReferenceCaster VoxelReferenceCaster::FromVTK(vtkImageData* image, Transfer
   }
   try
   {
-    if (static_cast<long long>(v.size()) == static_cast<long long>(d[0]) * d[1] * d[2])
-    {
-      const int start[3] = { e[0], e[2], e[4] };
-      RequireFiniteVoxels(v, d, start);
-    }
-    VoxelReferenceCaster rc(std::move(v), d, Vec3(o), Vec3(h), std::move(tf));
+    const int first[3] = { e[0], e[2], e[4] };
+    VoxelReferenceCaster rc(std::move(v), d, Vec3(o), Vec3(h), std::move(tf), first);
     if (vtkMatrix3x3* m = image->GetDirectionMatrix())
     {
       rc.SetDirection(m->GetData());

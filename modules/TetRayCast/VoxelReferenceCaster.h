@@ -23,9 +23,10 @@ namespace art
 class ADAPTIVERTTETRAYCAST_EXPORT VoxelReferenceCaster
 {
 public:
-  /// Point-sampled volume: dims[0] x dims[1] x dims[2] values, x fastest.
+  /// Point-sampled volume: dims[0] x dims[1] x dims[2] values, x fastest. `first`: the first
+  /// voxel's index (i, j, k) in its image's extent, for naming a bad voxel (default 0, 0, 0).
   VoxelReferenceCaster(std::vector<double> values, const int dims[3], const Vec3& origin, const Vec3& spacing,
-    TransferFunction tf);
+    TransferFunction tf, const int first[3] = nullptr);
   /// Honours the image's direction matrix (any invertible one: a rotation, a reflection, a shear).
   static VoxelReferenceCaster FromVTK(vtkImageData* image, TransferFunction tf, const std::string& file = {});
   /// The reference for what the tet caster draws with settings s: its transfer function, mode,
