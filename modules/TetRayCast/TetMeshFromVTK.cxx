@@ -110,7 +110,8 @@ TetMesh TetMesh::FromImage(vtkImageData* image, const std::string& file)
   // A voxel's own words (its index) rather than the mesh's "point N has a non-finite ...".
   const int first[3] = { e[0], e[2], e[4] };
   RequireFiniteVoxels(val, d, first, file);
-  RequireComputableRange(*std::min_element(val.begin(), val.end()), *std::max_element(val.begin(), val.end()), file);
+  const auto [lo, hi] = std::minmax_element(val.begin(), val.end());
+  RequireComputableRange(*lo, *hi, file);
   static const int five[5][4] = { { 0, 1, 2, 4 }, { 3, 1, 2, 7 }, { 5, 1, 4, 7 }, { 6, 2, 4, 7 }, { 1, 2, 4, 7 } };
   std::vector<std::array<int, 4>> tets;
   tets.reserve(5 * (d[0] - 1LL) * (d[1] - 1) * (d[2] - 1));
