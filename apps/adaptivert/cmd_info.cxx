@@ -81,6 +81,33 @@ std::string Bounds(vtkDataSet* ds)
   return s;
 }
 
+// NaN and infinite values of a float or double array (VTK's ranges leave them out; other types
+// hold none).
+struct NonFinite
+{
+  long long nan = 0, inf = 0;
+};
+NonFinite CountNonFinite(vtkDataArray* a)
+{
+  NonFinite c;
+  auto count = [&](const auto* v, vtkIdType n) {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      c.nan += std::isnan(v[i]) ? 1 : 0;
+      c.inf += std::isinf(v[i]) ? 1 : 0;
+    }
+  };
+  if (auto* f = vtkFloatArray::SafeDownCast(a))
+  {
+    count(f->GetPointer(0), f->GetNumberOfValues());
+  }
+  else if (auto* d = vtkDoubleArray::SafeDownCast(a))
+  {
+    count(d->GetPointer(0), d->GetNumberOfValues());
+  }
+  return c;
+}
+
 std::string ArrayList(vtkFieldData* fd)
 {
   std::string s;
@@ -94,21 +121,8 @@ std::string ArrayList(vtkFieldData* fd)
       da->GetRange(r, -1);
       char b[160];
       // VTK's range leaves NaN out: a masked field looked whole, and render then refused it.
-      long long bad = 0;
-      auto count = [&](const auto* v, vtkIdType n) {
-        for (vtkIdType k = 0; k < n; ++k)
-        {
-          bad += std::isfinite(v[k]) ? 0 : 1;
-        }
-      };
-      if (auto* f = vtkFloatArray::SafeDownCast(da))
-      {
-        count(f->GetPointer(0), f->GetNumberOfValues());
-      }
-      else if (auto* d = vtkDoubleArray::SafeDownCast(da))
-      {
-        count(d->GetPointer(0), d->GetNumberOfValues());
-      }
+      const NonFinite nf = CountNonFinite(da);
+      const long long bad = nf.nan + nf.inf;
       std::snprintf(b, sizeof b, " [%s x%d, %s%s%s]", da->GetDataTypeAsString(), da->GetNumberOfComponents(),
         Range(r[0], r[1], "..").c_str(), bad > 0 ? ", NaN or infinite: " : "", bad > 0 ? Grouped(bad).c_str() : "");
       s += b;
@@ -203,22 +217,7 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
       s->GetNumberOfComponents() > 1 ? (" (--array " + art::ComponentHint(s) + ")").c_str() : "");
     // NaN voxels (a masked MRI map, a statistics volume) are left out of VTK's range: the range
     // alone looked fine, and render and reduce then refused the volume.
-    long long nan = 0, inf = 0;
-    auto count = [&](const auto* v, vtkIdType n) {
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        nan += std::isnan(v[i]) ? 1 : 0;
-        inf += std::isinf(v[i]) ? 1 : 0;
-      }
-    };
-    if (auto* f = vtkFloatArray::SafeDownCast(s))
-    {
-      count(f->GetPointer(0), f->GetNumberOfValues());
-    }
-    else if (auto* d = vtkDoubleArray::SafeDownCast(s))
-    {
-      count(d->GetPointer(0), d->GetNumberOfValues());
-    }
+    const auto [nan, inf] = CountNonFinite(s);
     if (nan + inf > 0)
     {
       Out(text, "  non-finite   %s NaN and %s infinite values (render and reduce need finite voxels: replace them first, e.g. with numpy.nan_to_num)\n",
