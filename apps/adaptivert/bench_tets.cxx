@@ -228,10 +228,7 @@ int Run(const cli::Options& o)
       ro.RelocateVertices = !o.Flag("tets-no-relocate"); // as render reduces
       if (!o.Flag("tets-plain-reduction"))
       {
-        for (const auto& n : tf.Nodes())
-        {
-          ro.ScalarOpacity.emplace_back(n.s, n.alpha);
-        }
+        ro.ScalarOpacity = tf.OpacityPoints();
       }
       for (const auto& r : art::TetReducer(ro).Run(art::VolumeFromImage(volume, in)))
       {

@@ -109,13 +109,9 @@ int Run(const cli::Options& o)
   {
 #ifdef ART_HAVE_TetRayCast
     const std::string tf = o.Get("tf");
-    const bool file = std::filesystem::exists(tf) || tf.find('.') != std::string::npos || tf.find('/') != std::string::npos;
     const art::TransferFunction f =
-      file ? art::TransferFunction::FromFile(tf) : art::TransferFunction::Preset(tf, volume.Range[0], volume.Range[1]);
-    for (const auto& n : f.Nodes())
-    {
-      opt.ScalarOpacity.emplace_back(n.s, n.alpha);
-    }
+      art::TransferFunction::NamesFile(tf) ? art::TransferFunction::FromFile(tf) : art::TransferFunction::Preset(tf, volume.Range[0], volume.Range[1]);
+    opt.ScalarOpacity = f.OpacityPoints();
 #else
     throw cli::UsageError("--tf needs the TetRayCast module (transfer functions), which is not in this build");
 #endif

@@ -36,7 +36,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <optional>
 #include <iomanip>
 #include <sstream>
@@ -96,7 +95,7 @@ art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo,
 {
   const std::string tf = o.Get("tf");
   art::TransferFunction f;
-  if (std::filesystem::exists(tf) || tf.find('.') != std::string::npos || tf.find('/') != std::string::npos)
+  if (art::TransferFunction::NamesFile(tf))
   {
     f = art::TransferFunction::FromFile(tf);
   }
@@ -245,10 +244,7 @@ int Run(const cli::Options& o, const std::string& input)
         }
         if (!o.Flag("plain-reduction") && settings.mode == art::RenderSettings::Mode::Composite)
         {
-          for (const auto& n : settings.tf.Nodes()) // model what this transfer function shows
-          {
-            ro.ScalarOpacity.emplace_back(n.s, n.alpha);
-          }
+          ro.ScalarOpacity = settings.tf.OpacityPoints(); // model what this transfer function shows
           for (const auto& iso : settings.isos) // and where its iso-surfaces lie
           {
             ro.IsoValues.push_back(iso.value);

@@ -27,10 +27,7 @@ ReductionWorker::~ReductionWorker()
 art::ReducerOptions ReductionWorker::ShowingWith(const art::TransferFunction& tf)
 {
   art::ReducerOptions opt;
-  for (const auto& n : tf.Nodes())
-  {
-    opt.ScalarOpacity.emplace_back(n.s, n.alpha);
-  }
+  opt.ScalarOpacity = tf.OpacityPoints();
   opt.RelocateVertices = true;
   return opt;
 }

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <filesystem>
 #include <sstream>
 
 namespace art
@@ -475,6 +476,11 @@ TransferFunction FromParaViewPreset(std::istream& in, const std::string& path)
   return TransferFunction::FromVTK(p);
 }
 } // namespace
+
+bool TransferFunction::NamesFile(const std::string& tf)
+{
+  return std::filesystem::exists(tf) || tf.find_first_of("./") != std::string::npos;
+}
 
 TransferFunction TransferFunction::FromFile(const std::string& path)
 {

@@ -74,11 +74,24 @@ public:
   /// "ColorSpace", "Points" for the opacity, else a ramp from 0 to 1 over the colour points).
   /// Throws art::Error naming the file (and line) for anything malformed.
   static TransferFunction FromFile(const std::string& path);
+  /// Does a --tf value name a file (it exists, or has a '.' or '/') rather than a preset?
+  static bool NamesFile(const std::string& tf);
 
   /// Fills a vtkVolumeProperty with the same functions (for VTK's own mappers and the viewer).
   void ToVTK(vtkVolumeProperty* p) const;
 
   const std::vector<Node>& Nodes() const { return N; }
+  /// The opacity function as (scalar, opacity) points: what the reducer weighs a fit by
+  /// (art::ReducerOptions::ScalarOpacity).
+  std::vector<std::pair<double, double>> OpacityPoints() const
+  {
+    std::vector<std::pair<double, double>> p;
+    for (const Node& n : N)
+    {
+      p.emplace_back(n.s, n.alpha);
+    }
+    return p;
+  }
   double UnitDistance() const { return Unit; }
 
   /// Index i of the interval [s_i, s_{i+1}] holding s (-1 below the first node, size-1 above).
