@@ -317,22 +317,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // A frame's time, for AutoAdjustSampleDistances, leaves out (re)building the mesh.
   const auto frameStart = std::chrono::steady_clock::now();
   art::RenderSettings s;
-  this->WarnUnsupported(vol->GetProperty());
-  vtkVolumeProperty* prop = vol->GetProperty();
-  int cellFlag = 0;
-  vtkDataArray* shown = vtkAbstractMapper::GetScalars(
-    grid, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
-  if (prop && !prop->GetIndependentComponents() && shown && shown->GetNumberOfComponents() > 1 &&
-    !(this->Warned & 4))
-  {
-    // VTK's image mappers then take the colour from the components themselves (RGBA, or a value
-    // and its opacity); the mapper draws one scalar through the functions, a different image.
-    this->Warned |= 4;
-    vtkWarningMacro("the vtkVolumeProperty's IndependentComponents off (colour from the array's "
-      << shown->GetNumberOfComponents()
-      << " components themselves) is not supported: one scalar of them (VectorMode) is drawn through "
-         "the colour and opacity functions");
-  }
+  this->WarnUnsupported(vol->GetProperty(), grid);
   try
   {
     s.tf = art::TransferFunction::FromVTK(vol->GetProperty());
@@ -443,13 +428,29 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   this->LastFrameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
 }
 
-void vtkTetRayCastMapper::WarnUnsupported(vtkVolumeProperty* p)
+void vtkTetRayCastMapper::WarnUnsupported(vtkVolumeProperty* p, vtkUnstructuredGrid* grid)
 {
   // Said once each, as the property is read every frame: VTK's own unstructured-grid mappers
   // drop these without a word, which leaves a user wondering why the setting does nothing.
   if (!p)
   {
     return;
+  }
+  if (!p->GetIndependentComponents() && !(this->Warned & 4))
+  {
+    int cellFlag = 0;
+    vtkDataArray* shown = vtkAbstractMapper::GetScalars(
+      grid, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+    if (shown && shown->GetNumberOfComponents() > 1)
+    {
+      // VTK's image mappers then take the colour from the components themselves (RGBA, or a value
+      // and its opacity); the mapper draws one scalar through the functions, a different image.
+      this->Warned |= 4;
+      vtkWarningMacro("the vtkVolumeProperty's IndependentComponents off (colour from the array's "
+        << shown->GetNumberOfComponents()
+        << " components themselves) is not supported: one scalar of them (VectorMode) is drawn through "
+           "the colour and opacity functions");
+    }
   }
   if (p->GetShade(0) && !(this->Warned & 1))
   {

@@ -33,6 +33,7 @@
 
 class vtkImageData;
 class vtkRayCastImageDisplayHelper;
+class vtkUnstructuredGrid;
 class vtkVolumeProperty;
 
 class ADAPTIVERTTETRAYCAST_EXPORT vtkTetRayCastMapper : public vtkUnstructuredGridVolumeMapper
@@ -141,8 +142,11 @@ protected:
   int Warned = 0; ///< unsupported property settings already named: 1 shading, 2 gradient opacity,
                  ///< 4 IndependentComponents off
 
-  /** Warns, once each, of property settings the mapper does not follow (shading, gradient opacity). */
-  void WarnUnsupported(vtkVolumeProperty* p);
+  /**
+   * Warns, once each, of property settings the mapper does not follow for `grid`'s scalars
+   * (shading, gradient opacity, IndependentComponents off on a multi-component array).
+   */
+  void WarnUnsupported(vtkVolumeProperty* p, vtkUnstructuredGrid* grid);
 
 private:
   vtkTetRayCastMapper(const vtkTetRayCastMapper&) = delete;
