@@ -1,10 +1,13 @@
 // EntryFinder: the boundary faces a ray enters a tet mesh through (Grosso, Luerig & Ertl 1997,
 // sec. 5, ray entrance). Per frame, the boundary faces that face the camera are sorted into
-// 8x8-pixel screen buckets. A convex mesh has one entry face per ray: the previous ray's entry face
-// (scan lines run in alternating directions, so it is the neighbouring pixel's) and its boundary
-// neighbours are tried first, the bucket only when that walk fails. A non-convex mesh needs every
-// entry face along the ray, sorted by t: all of the bucket's faces are tested (or, when given, the
-// TriangleGrid all-hits query over the boundary triangles is used instead; see TetRayCaster).
+// 8x8-pixel screen buckets, each bucket's faces by their nearest depth. A convex mesh has one
+// entry face per ray: the previous ray's entry face (scan lines run in alternating directions, so
+// it is the neighbouring pixel's) and its boundary neighbours are tried first, the bucket only
+// when that walk fails. A non-convex mesh (or region) needs every entry face along the ray in t
+// order: an EntryCursor hands them out as the walk asks for them, testing a bucket's faces only
+// up to the depth of the nearest entry found, so faces behind it wait until the ray gets there
+// (with early termination most rays never do). Or, when given, the TriangleGrid all-hits query
+// over the boundary triangles is used instead; see TetRayCaster.
 #ifndef art_EntryFinder_h
 #define art_EntryFinder_h
 
@@ -25,6 +28,56 @@ struct Entry
   FaceCrossing x;
 };
 
+class EntryFinder;
+
+/// A face in one of EntryFinder's screen buckets: its pixel box (with slack) and nearest depth
+/// along the view, inline so that a bucket's scan reads memory in order.
+struct EntrySlot
+{
+  float x0, x1, y0, y1, z;
+  int face;
+};
+
+/// One ray's entries in t order (EntryFinder::Start), found as they are asked for, or a list
+/// already sorted (List).
+class ADAPTIVERTTETRAYCAST_EXPORT EntryCursor
+{
+public:
+  /// The next entry in t order, not taken; null when there is none.
+  const Entry* Front()
+  {
+    if (Next != End)
+    {
+      Scan();
+    }
+    return Head < Pending.size() ? &Pending[Head] : nullptr;
+  }
+  void Pop() { ++Head; }
+  /// A list sorted by t, for a source that finds every entry at once.
+  std::vector<Entry>& List()
+  {
+    Head = 0;
+    Next = End = nullptr;
+    return Pending;
+  }
+
+private:
+  friend class EntryFinder;
+  void Scan();
+  void Insert(const Entry& e);
+
+  std::vector<Entry> Pending; ///< found, sorted by t from Head on
+  std::size_t Head = 0;
+  const EntryFinder* F = nullptr;
+  const TetWalker* W = nullptr;
+  const ProjectedWalker* PW = nullptr;
+  const EntrySlot* Next = nullptr; ///< the bucket's faces not yet tested
+  const EntrySlot* End = nullptr;
+  float Fx = 0, Fy = 0;
+  double TMin = 0, Z0 = 0, InvDz = 0, Slack = 0;
+  bool Prune = false;
+};
+
 class ADAPTIVERTTETRAYCAST_EXPORT EntryFinder
 {
 public:
@@ -42,6 +95,11 @@ public:
   void Find(const TetWalker& w, const Ray& r, int px, int py, bool all, std::vector<Entry>& out,
     int& hint, Counters& c, const ProjectedWalker* pw = nullptr) const;
 
+  /// Every entry of ray r through pixel px, py, handed out by `cur` in t order as they are asked
+  /// for (the whole bucket is tested only when the ray gets past its faces).
+  void Start(EntryCursor& cur, const TetWalker& w, const Ray& r, int px, int py, Counters& c,
+    const ProjectedWalker* pw = nullptr) const;
+
   /// True when no ray through the pixels [x0, x1) x [y0, y1) can find an entry: their buckets
   /// are empty and no face is tested by every ray.
   bool Empty(int x0, int y0, int x1, int y1) const;
@@ -50,16 +108,18 @@ public:
   std::size_t GlobalCount() const { return Global.size(); }
 
 private:
-  bool Test(const TetWalker& w, const ProjectedWalker* pw, const Ray& r, int b, Entry& e) const;
+  friend class EntryCursor;
+  bool Test(const TetWalker& w, const ProjectedWalker* pw, double tmin, int b, Entry& e) const;
 
   const TetMesh& M;
   const std::vector<std::array<int, 2>>& F; ///< the faces entered through
   bool Region = false;                      ///< F is not the mesh's boundary (no adjacency)
   int W = 0, H = 0, BW = 0, BH = 0;
   bool Bucketed = false;
-  std::vector<int> Start, Faces; ///< CSR: faces of bucket k are Faces[Start[k] .. Start[k+1])
-  std::vector<int> Global;       ///< faces every ray must test (behind the eye, or no camera)
-  std::vector<std::array<float, 4>> Box; ///< each bucketed face's pixel box x0, x1, y0, y1, with slack
+  Vec3 Eye, Fwd; ///< depth is (p - Eye) . Fwd
+  std::vector<int> Begin;   ///< CSR: bucket k's faces are Slots[Begin[k] .. Begin[k+1]), nearest first
+  std::vector<EntrySlot> Slots;
+  std::vector<int> Global;  ///< faces every ray must test (behind the eye, or no camera)
 };
 } // namespace art
 

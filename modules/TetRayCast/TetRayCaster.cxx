@@ -32,7 +32,7 @@ struct TetRayCaster::Impl
   // faces (the start tet's exit); walker walks (w itself, or a ProjectedWalker for the same ray).
   template <class Rule, class Walker>
   static void Trace(const TetRayCaster& rc, const Rule& rule, const TetWalker& w, const Walker& walker,
-    const Ray& r, int start, const std::vector<Entry>& entries, RayResult& res, Counters& c,
+    const Ray& r, int start, EntryCursor& entries, RayResult& res, Counters& c,
     std::uint64_t& nudges, bool region = false, double from = -std::numeric_limits<double>::infinity())
   {
     const TetMesh& M = rc.M;
@@ -181,9 +181,11 @@ struct TetRayCaster::Impl
         ++nudges; // the origin on a face or the ray in one: the boundary entries take over
       }
     }
-    for (const Entry& e : entries)
+    for (const Entry* next = stop ? nullptr : entries.Front(); next; next = stop ? nullptr : entries.Front())
     {
-      if (stop || e.x.t >= r.tmax)
+      const Entry e = *next;
+      entries.Pop();
+      if (e.x.t >= r.tmax)
       {
         break;
       }
@@ -217,13 +219,18 @@ struct TetRayCaster::Impl
   }
 
   static void Entries(const TetRayCaster& rc, const EntryFinder& f, const TetWalker& w, const Ray& r,
-    int px, int py, std::vector<Entry>& out, int& hint, Counters& c, bool region = false,
+    int px, int py, EntryCursor& out, int& hint, Counters& c, bool region = false,
     const ProjectedWalker* pw = nullptr)
   {
     const bool convex = rc.M.IsConvex();
-    if (region || convex || !rc.Boundary || !rc.S.boundaryGrid)
+    if (convex && !region)
     {
-      f.Find(w, r, px, py, !convex, out, hint, c, pw);
+      f.Find(w, r, px, py, false, out.List(), hint, c, pw);
+      return;
+    }
+    if (region || !rc.Boundary || !rc.S.boundaryGrid)
+    {
+      f.Start(out, w, r, px, py, c, pw);
       return;
     }
     // Non-convex: every boundary face in the TriangleGrid's voxels along the ray gets the exact
@@ -234,7 +241,8 @@ struct TetRayCaster::Impl
     Ray local = r;
     local.org = r.org - rc.BoundaryOrigin;
     rc.Boundary->Candidates(local, cand, c);
-    out.clear();
+    auto& list = out.List();
+    list.clear();
     const auto& bfs = rc.M.BoundaryFaces();
     for (long long b : cand)
     {
@@ -242,10 +250,10 @@ struct TetRayCaster::Impl
       if (w.Crosses(bfs[b][0], bfs[b][1], -1, e.x) && e.x.t >= r.tmin)
       {
         e.face = static_cast<int>(b);
-        out.push_back(e);
+        list.push_back(e);
       }
     }
-    std::stable_sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) { return a.x.t < b.x.t; });
+    std::stable_sort(list.begin(), list.end(), [](const Entry& a, const Entry& b) { return a.x.t < b.x.t; });
   }
 
   // The clipping planes' interval of ray r (box interval [t0, t1]): the walk still starts at the
@@ -304,7 +312,7 @@ struct TetRayCaster::Impl
           c.rays += static_cast<std::uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0);
           return;
         }
-        std::vector<Entry> entries;
+        EntryCursor entries;
         std::uint64_t nd = 0;
         int hint = -1;
         for (int y = tile.y0; y < tile.y1; ++y)
@@ -352,7 +360,7 @@ struct TetRayCaster::Impl
               pw.emplace(*view, r);
             }
             Entries(rc, *finder, w, r, x, y, entries, hint, c, region, pw ? &*pw : nullptr);
-            if (entries.empty() && start < 0)
+            if (!entries.Front() && start < 0)
             {
               continue;
             }
@@ -467,7 +475,7 @@ RayResult TetRayCaster::Cast(const Ray& ray) const
   }
   const EntryFinder finder(M);
   const TetWalker w(M, r);
-  std::vector<Entry> entries;
+  EntryCursor entries;
   int hint = -1;
   Counters c;
   std::uint64_t nudges = 0;
