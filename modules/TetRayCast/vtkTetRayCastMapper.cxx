@@ -422,7 +422,9 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   double b[6];
   input->GetBounds(b);
   const double minZ = QuadDepth(ren, b, toWorld);
-  int mem[2] = { w, h }, view[2] = { vw, vh }, use[2] = { w, h }, origin[2] = { 0, 0 };
+  // The quad is placed in image samples: the image's own size is the viewport's (VTK's ray-cast
+  // mappers pass the same), so a coarser ImageSampleDistance still fills the viewport.
+  int mem[2] = { w, h }, view[2] = { w, h }, use[2] = { w, h }, origin[2] = { 0, 0 };
   this->Impl->Helper->SetPreMultipliedColors(1);
   this->Impl->Helper->RenderTexture(vol, ren, mem, view, use, origin, static_cast<float>(minZ), bytes.data());
   this->LastFrameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();

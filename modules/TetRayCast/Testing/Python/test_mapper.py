@@ -152,6 +152,12 @@ assert mapper.GetImageSampleDistance() == 1.0
 # iso-surfaces add shaded surfaces.
 mapper.AutoAdjustSampleDistancesOff()
 mapper.SetImageSampleDistance(2)
+# The half-resolution image is drawn over the whole viewport, as at full resolution (not
+# shrunk into its lower-left quarter): the window shows the first picture, blurred a little.
+coarse = grab(win.Render() or win).astype(float)
+blur = np.abs(coarse - shown)
+print(f"window at ImageSampleDistance 2 vs 1: mean {blur.mean():.2f} levels")
+assert blur.mean() < 4, blur.mean()
 mapper.AddIsoSurface(200, 1, 1, 1, 1.0)
 win.Render()
 half = mapper.GetLastImage()
