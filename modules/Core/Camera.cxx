@@ -21,6 +21,11 @@ Camera Camera::FromVTK(vtkCamera* cam, int width, int height)
   c.Up = Cross(c.Right, c.Fwd);
   c.Parallel = cam->GetParallelProjection() != 0;
   const double aspect = double(c.W) / double(c.H);
+  // SetWindowCenter moves the frustum's window across the image plane ((centre - 1, centre + 1)
+  // half extents each way): vtkRenderLargeImage renders each tile of a large screenshot so.
+  const double* centre = cam->GetWindowCenter();
+  c.Cx = centre[0];
+  c.Cy = centre[1];
   if (c.Parallel)
   {
     c.HalfH = cam->GetParallelScale();
@@ -87,8 +92,8 @@ void Camera::Frame(vtkCamera* cam, const Box3& b, double azimuth, double elevati
 Ray Camera::Generate(double px, double py) const
 {
   // NDC in [-1, 1], y up; pixel centres sit at +0.5.
-  const double sx = (2.0 * (px + 0.5) / W - 1.0) * HalfW;
-  const double sy = (1.0 - 2.0 * (py + 0.5) / H) * HalfH;
+  const double sx = (2.0 * (px + 0.5) / W - 1.0 + Cx) * HalfW;
+  const double sy = (1.0 - 2.0 * (py + 0.5) / H + Cy) * HalfH;
   Ray r;
   if (Parallel)
   {

@@ -17,7 +17,8 @@ public:
   Camera() = default;
 
   /// The view of `cam` for an image of width x height pixels (VTK's vertical view angle,
-  /// or the horizontal one when the camera says so; parallel scale for parallel projection).
+  /// or the horizontal one when the camera says so; parallel scale for parallel projection;
+  /// the window centre, which shifts the image off the view axis as vtkRenderLargeImage's tiles do).
   static Camera FromVTK(vtkCamera* cam, int width, int height);
 
   /// Points `cam` at `bounds` from the given direction the way vtkRenderer::ResetCamera does,
@@ -41,6 +42,7 @@ public:
 private:
   Vec3 Eye, Fwd{ 0, 0, -1 }, Right{ 1, 0, 0 }, Up{ 0, 1, 0 };
   double HalfW = 1.0, HalfH = 1.0; // image-plane half extents at distance 1 (or world units)
+  double Cx = 0.0, Cy = 0.0;       // vtkCamera's window centre: the image's centre, in half extents
   int W = 1, H = 1;
   bool Parallel = false;
 };

@@ -33,13 +33,15 @@ EntryFinder::EntryFinder(const TetMesh& m, const Camera& cam, const std::vector<
   // projection below is exactly the inverse of Camera::Generate.
   const Vec3 eye = Eye, fwd = Fwd;
   const bool par = cam.IsParallel();
-  Vec3 RW, UH;
+  // The image's centre may sit off the view axis (a window centre): its offset C is taken off.
+  Vec3 RW, UH, C;
   {
-    const Ray rx = cam.Generate(W - 0.5, 0.5 * H - 0.5), ry = cam.Generate(0.5 * W - 0.5, -0.5);
-    RW = par ? rx.org - eye : rx.dir / Dot(rx.dir, fwd) - fwd;
-    UH = par ? ry.org - eye : ry.dir / Dot(ry.dir, fwd) - fwd;
+    auto plane = [&](const Ray& r) { return par ? r.org - eye : r.dir / Dot(r.dir, fwd) - fwd; };
+    C = plane(cam.Generate(0.5 * W - 0.5, 0.5 * H - 0.5));
+    RW = plane(cam.Generate(W - 0.5, 0.5 * H - 0.5)) - C;
+    UH = plane(cam.Generate(0.5 * W - 0.5, -0.5)) - C;
   }
-  const double rr = Dot(RW, RW), uu = Dot(UH, UH);
+  const double rr = Dot(RW, RW), uu = Dot(UH, UH), cr = Dot(C, RW), cu = Dot(C, UH);
   const auto& bf = F;
   // Each face's bucket rectangle x0, x1, y0, y1 (inclusive; empty: none) and slot, in parallel.
   std::vector<std::array<int, 4>> rect(bf.size(), { 1, 0, 1, 0 });
@@ -81,7 +83,7 @@ EntryFinder::EntryFinder(const TetMesh& m, const Camera& cam, const std::vector<
       }
       for (int k = 0; k < 3; ++k)
       {
-        const double xn = Dot(q[k], RW) / (rr * z[k]), yn = Dot(q[k], UH) / (uu * z[k]);
+        const double xn = (Dot(q[k], RW) / z[k] - cr) / rr, yn = (Dot(q[k], UH) / z[k] - cu) / uu;
         const double px = (xn + 1) * 0.5 * W - 0.5, py = (1 - yn) * 0.5 * H - 0.5;
         x0 = std::min(x0, px), x1 = std::max(x1, px), y0 = std::min(y0, py), y1 = std::max(y1, py);
       }
