@@ -166,19 +166,29 @@ TransferFunction TransferFunction::FromVTK(vtkVolumeProperty* p)
   }
   std::sort(s.begin(), s.end());
   s.erase(std::unique(s.begin(), s.end()), s.end());
+  // A function emptied of its points (RemoveAllPoints) is 0 everywhere, as VTK evaluates it and
+  // VTK's mappers draw it: an emptied opacity function hides the volume (it drew it opaque), an
+  // emptied colour function draws black (it drew white).
   auto at = [&](double x) {
     Node n{ x, { 1, 1, 1 }, 1.0, 0.0 };
-    if (ctf && ctf->GetSize() > 0)
+    if (ctf)
     {
-      ctf->GetColor(x, n.rgb);
+      if (ctf->GetSize() > 0)
+      {
+        ctf->GetColor(x, n.rgb);
+      }
+      else
+      {
+        n.rgb[0] = n.rgb[1] = n.rgb[2] = 0.0;
+      }
     }
-    if (gtf && gtf->GetSize() > 0)
+    if (gtf)
     {
-      n.rgb[0] = n.rgb[1] = n.rgb[2] = gtf->GetValue(x);
+      n.rgb[0] = n.rgb[1] = n.rgb[2] = gtf->GetSize() > 0 ? gtf->GetValue(x) : 0.0;
     }
-    if (otf && otf->GetSize() > 0)
+    if (otf)
     {
-      n.alpha = otf->GetValue(x);
+      n.alpha = otf->GetSize() > 0 ? otf->GetValue(x) : 0.0;
     }
     return n;
   };
