@@ -149,6 +149,7 @@ struct vtkTetRayCastMapper::Internals
   vtkDataSet* MeshInput = nullptr;
   std::string MeshArray;
   bool MeshRefused = false; ///< the build for MeshInput, MeshTime and MeshArray failed (said once)
+  std::string LastError;    ///< FrameError's message while it repeats
   std::vector<art::IsoSurface> Isos;
   std::vector<std::array<double, 4>> LastPlanes; ///< the last frame's clipping planes (engine coordinates)
   vtkSmartPointer<vtkImageData> Last = vtkSmartPointer<vtkImageData>::New();
@@ -207,7 +208,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(input);
   if (!grid)
   {
-    vtkErrorMacro("input must be a vtkUnstructuredGrid");
+    this->FrameError("input must be a vtkUnstructuredGrid");
     return;
   }
   if (grid->GetNumberOfCells() == 0)
@@ -223,7 +224,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME ? this->ArrayName : nullptr, this->ArrayId, component, key, error);
   if (!engineGrid)
   {
-    vtkErrorMacro(<< error);
+    this->FrameError(error);
     return;
   }
   // Rays are cast in the data's own coordinates when the volume's matrix is a rotation times one
@@ -324,7 +325,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   catch (const art::Error& e)
   {
-    vtkErrorMacro(<< e.what());
+    this->FrameError(e.what());
     return;
   }
   s.earlyTermination = this->EarlyRayTermination >= 1.0 ? 2.0 : this->EarlyRayTermination;
@@ -357,6 +358,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     IntoData(local, engineToWorld, toData);
   }
+  this->WarnUnsupported(ren->GetActiveCamera());
   const art::Camera cam = art::Camera::FromVTK(local, w, h);
   std::vector<double> ends;
   if (this->IntermixIntersectingGeometry && ren->GetNumberOfPropsRendered() > 0 && ren->GetRenderWindow())
@@ -398,6 +400,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   this->InvokeEvent(vtkCommand::VolumeMapperRenderEndEvent);
   this->LastRenderTime = st.seconds;
+  this->Impl->LastError.clear();
   this->LastTetsCrossed = static_cast<double>(st.counters.tetsCrossed);
 
   // Keep the float image (bottom row first, as VTK images are) and draw 8-bit premultiplied RGBA.
@@ -492,4 +495,46 @@ void vtkTetRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VectorMode: " << this->VectorMode << " (component " << this->VectorComponent << ")\n";
   os << indent << "IsoSurfaces: " << this->Impl->Isos.size() << "\n";
   os << indent << "LastRenderTime: " << this->LastRenderTime << "\n";
+}
+
+void vtkTetRayCastMapper::WarnUnsupported(vtkCamera* cam)
+{
+  if (!cam || (this->Warned & 8))
+  {
+    return;
+  }
+  std::string what;
+  const double* shear = cam->GetViewShear();
+  if (shear[0] != 0.0 || shear[1] != 0.0)
+  {
+    what = "view shear (SetViewShear)";
+  }
+  else if (cam->GetUseOffAxisProjection())
+  {
+    what = "off-axis projection";
+  }
+  else if (cam->GetUserTransform() || cam->GetUserViewTransform())
+  {
+    what = "user transform";
+  }
+  else if (!cam->GetModelTransformMatrix()->IsIdentity())
+  {
+    what = "model transform matrix";
+  }
+  if (!what.empty())
+  {
+    this->Warned |= 8;
+    vtkWarningMacro("the camera's " << what << " is not supported: the volume is drawn as without it, "
+      "while opaque geometry follows it (position, focal point, view up, view angle, parallel scale "
+      "and window centre are followed)");
+  }
+}
+
+void vtkTetRayCastMapper::FrameError(const std::string& message)
+{
+  if (message != this->Impl->LastError)
+  {
+    this->Impl->LastError = message;
+    vtkErrorMacro(<< message);
+  }
 }

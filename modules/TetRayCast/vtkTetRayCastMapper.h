@@ -31,6 +31,9 @@
 #include "AdaptiveRTTetRayCastModule.h"
 #include "vtkUnstructuredGridVolumeMapper.h"
 
+#include <string> // FrameError
+
+class vtkCamera;
 class vtkImageData;
 class vtkRayCastImageDisplayHelper;
 class vtkUnstructuredGrid;
@@ -139,14 +142,24 @@ protected:
   double LastTetsCrossed = 0.0;
   int VectorMode = DISABLED;
   int VectorComponent = 0;
-  int Warned = 0; ///< unsupported property settings already named: 1 shading, 2 gradient opacity,
-                 ///< 4 IndependentComponents off
+  int Warned = 0; ///< unsupported settings already named: 1 shading, 2 gradient opacity,
+                 ///< 4 IndependentComponents off, 8 the camera's
 
   /**
    * Warns, once each, of property settings the mapper does not follow for `grid`'s scalars
    * (shading, gradient opacity, IndependentComponents off on a multi-component array).
    */
   void WarnUnsupported(vtkVolumeProperty* p, vtkUnstructuredGrid* grid);
+  /**
+   * Warns, once, of camera settings the rays do not follow (view shear, off-axis projection, user
+   * and model transforms): opaque geometry moves with them, the volume does not.
+   */
+  void WarnUnsupported(vtkCamera* cam);
+  /**
+   * An error that stops this frame, said once while it repeats frame after frame (ParaView
+   * renders on every interaction); a frame drawn in between lets it be said again.
+   */
+  void FrameError(const std::string& message);
 
 private:
   vtkTetRayCastMapper(const vtkTetRayCastMapper&) = delete;

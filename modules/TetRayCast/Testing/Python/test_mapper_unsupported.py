@@ -3,7 +3,9 @@
 VTK's own unstructured-grid mappers drop both silently; the image must stay the same (the mapper
 does not follow them) and a warning must name each, once, however many frames are drawn. An
 unchanged default (gradient opacity 1 everywhere) is no news. An empty input (a threshold that
-keeps nothing) draws nothing without an error each frame. Needs a display (skips with exit 77).
+keeps nothing) draws nothing without an error each frame; an error that stops every frame is said
+once while it repeats; camera settings the rays ignore (view shear) are named once. Needs a
+display (skips with exit 77).
 """
 from mapper_scene import box_tets, constant_property, messages, offscreen_scene, require_display
 
@@ -71,4 +73,26 @@ empty.SetPoints(box.GetPoints())
 mapper.SetInputData(empty)
 got = frames(2)
 assert len(got) == 3, got  # no error for the empty grid
+
+# An error that stops every frame alike (an array name that is not there) is said once while it
+# repeats, however often ParaView renders; once a frame draws again, it may be said anew.
+mapper.SetInputData(box)
+mapper.SetScalarModeToUsePointFieldData()
+mapper.SelectScalarArray("no such array")
+got = frames(4)
+print(got[3:])
+assert len(got) == 4 and "no such array" in got[3], got
+mapper.SetScalarModeToDefault()
+assert frames(1)[4:] == [], warnings[4:]
+mapper.SetScalarModeToUsePointFieldData()
+assert len(frames(2)) == 5, warnings  # said again after the good frame, once
+mapper.SetScalarModeToDefault()
+
+# Camera settings the rays do not follow are named once (opaque geometry follows them).
+cam = ren.GetActiveCamera()
+cam.SetViewShear(0.3, 0.0, 1.0)
+got = frames(3)
+print(got[5:])
+assert len(got) == 6 and "view shear" in got[5], got
+cam.SetViewShear(0.0, 0.0, 1.0)
 print("ok")
