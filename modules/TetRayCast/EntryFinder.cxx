@@ -25,7 +25,7 @@ EntryFinder::EntryFinder(const TetMesh& m)
 
 EntryFinder::EntryFinder(const TetMesh& m, const Camera& cam, const std::vector<std::array<int, 2>>* faces)
   : M(m), F(faces ? *faces : m.BoundaryFaces()), Region(faces != nullptr), W(cam.Width()), H(cam.Height()),
-    Bucketed(true), Eye(cam.Position()), Fwd(cam.Forward())
+    Bucketed(true), Eye(cam.Position()), Fwd(cam.Forward()), DepthMargin(1e-9 * m.Bounds().Diagonal())
 {
   BW = (W + B - 1) / B;
   BH = (H + B - 1) / B;
@@ -270,7 +270,7 @@ void EntryFinder::Start(EntryCursor& cur, const TetWalker& w, const Ray& r, int 
   cur.Prune = dz > 0;
   cur.InvDz = cur.Prune ? 1.0 / dz : 0.0;
   cur.Z0 = Dot(r.org - Eye, Fwd);
-  cur.Slack = 1e-9 * M.Bounds().Diagonal() * cur.InvDz;
+  cur.Slack = DepthMargin * cur.InvDz;
 }
 
 void EntryCursor::Insert(const Entry& e)

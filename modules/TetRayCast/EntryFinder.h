@@ -116,7 +116,8 @@ private:
   bool Region = false;                      ///< F is not the mesh's boundary (no adjacency)
   int W = 0, H = 0, BW = 0, BH = 0;
   bool Bucketed = false;
-  Vec3 Eye, Fwd; ///< depth is (p - Eye) . Fwd
+  Vec3 Eye, Fwd;            ///< depth is (p - Eye) . Fwd
+  double DepthMargin = 0;   ///< 1e-9 of the mesh's size: the cursor's slack in depth, once a frame
   std::vector<int> Begin;   ///< CSR: bucket k's faces are Slots[Begin[k] .. Begin[k+1]), nearest first
   std::vector<EntrySlot> Slots;
   std::vector<int> Global;  ///< faces every ray must test (behind the eye, or no camera)
