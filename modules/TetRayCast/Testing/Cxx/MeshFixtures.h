@@ -1,11 +1,17 @@
 // Test meshes: a box of cubes split into tets two different ways (Kuhn's 6 or the alternating 5),
 // optionally with cells left out (an L-shape, a hole), and a brute-force reference caster that
-// intersects every tet with the ray and integrates the union of the pieces front to back.
+// intersects every tet with the ray and integrates the union of the pieces front to back; the
+// linear field, transfer function and camera the caster's tests share.
 #ifndef art_MeshFixtures_h
 #define art_MeshFixtures_h
 
+#include "Camera.h"
 #include "ExactIntegrator.h"
 #include "TetMesh.h"
+#include "TransferFunction.h"
+
+#include <vtkCamera.h>
+#include <vtkNew.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +21,29 @@
 namespace fixtures
 {
 using art::Vec3;
+
+/// A linear field: every tetrahedralisation interpolates it exactly.
+inline double Linear(const Vec3& p)
+{
+  return 0.3 + 0.2 * p.x - 0.1 * p.y + 0.15 * p.z;
+}
+
+/// Red rises, green falls, blue constant; constant opacity 0.3 per 0.5 units.
+inline art::TransferFunction LinearTF(double lo, double hi)
+{
+  return art::TransferFunction({ { lo, { 0, 1, 0.5 }, 0.3, 0 }, { hi, { 1, 0, 0.5 }, 0.3, 0 } }, 0.5);
+}
+
+/// A w x h view of the box b from azimuth az and elevation el (degrees), framed with a margin.
+inline art::Camera ViewOf(const art::Box3& b, int w, int h, double az, double el)
+{
+  vtkNew<vtkCamera> cam;
+  cam->SetPosition(0, -1, 0);
+  cam->SetFocalPoint(0, 0, 0);
+  cam->SetViewUp(0, 0, 1);
+  art::Camera::Frame(cam, b, az, el, 1.3);
+  return art::Camera::FromVTK(cam, w, h);
+}
 
 inline art::TetMesh GridMesh(int nx, int ny, int nz, Vec3 origin, Vec3 h,
   const std::function<double(const Vec3&)>& f, int scheme,
