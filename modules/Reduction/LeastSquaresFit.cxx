@@ -140,18 +140,36 @@ TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t, const std::
   return m;
 }
 
-void LeastSquaresFit::UpdateMoments(const BisectionMesh& mesh, const std::vector<int>& tets, const std::vector<double>* fit)
+void LeastSquaresFit::UpdateMoments(
+  const BisectionMesh& mesh, const std::vector<int>& tets, const std::vector<double>* fit, const Done& done)
 {
   Mom.resize(static_cast<size_t>(mesh.NumberOfTets()));
-  ForEachRange(static_cast<long long>(tets.size()), 64, [&](long long b, long long e, Counters&) {
-    for (long long i = b; i < e; ++i)
-    {
-      Mom[tets[i]] = Gather(mesh, tets[i], fit);
-    }
-  });
+  GatherAll(mesh, tets, fit, done);
 }
 
-long long LeastSquaresFit::Reweigh(const BisectionMesh& mesh, const std::vector<double>& fit)
+void LeastSquaresFit::GatherAll(
+  const BisectionMesh& mesh, const std::vector<int>& tets, const std::vector<double>* fit, const Done& done)
+{
+  const long long n = static_cast<long long>(tets.size());
+  // Twenty slices tell the progress every 5%; each is still thousands of tets on a large mesh.
+  const long long slice = done ? std::max(1LL, (n + 19) / 20) : std::max(1LL, n);
+  for (long long s0 = 0; s0 < n; s0 += slice)
+  {
+    const long long s1 = std::min(n, s0 + slice);
+    ForEachRange(s1 - s0, 64, [&](long long b, long long e, Counters&) {
+      for (long long i = s0 + b; i < s0 + e; ++i)
+      {
+        Mom[tets[i]] = Gather(mesh, tets[i], fit);
+      }
+    });
+    if (done)
+    {
+      done(static_cast<double>(s1) / static_cast<double>(n));
+    }
+  }
+}
+
+long long LeastSquaresFit::Reweigh(const BisectionMesh& mesh, const std::vector<double>& fit, const Done& done)
 {
   const int nt = mesh.NumberOfTets();
   Mom.resize(static_cast<size_t>(nt));
@@ -179,12 +197,7 @@ long long LeastSquaresFit::Reweigh(const BisectionMesh& mesh, const std::vector<
       stale.push_back(t);
     }
   }
-  ForEachRange(static_cast<long long>(stale.size()), 64, [&](long long b, long long e, Counters&) {
-    for (long long i = b; i < e; ++i)
-    {
-      Mom[stale[i]] = Gather(mesh, stale[i], &fit);
-    }
-  });
+  GatherAll(mesh, stale, &fit, done);
   return static_cast<long long>(stale.size());
 }
 

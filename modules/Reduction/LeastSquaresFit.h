@@ -11,6 +11,7 @@
 #include "VoxelVolume.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace art
@@ -65,6 +66,10 @@ struct EdgeSplitMoments
 class ADAPTIVERTREDUCTION_EXPORT LeastSquaresFit
 {
 public:
+  /// Told the fraction of a gathering done, on the calling thread, between slices of the tets
+  /// (a pass over a large volume takes seconds; VTK's progress must come from the driver thread).
+  using Done = std::function<void(double)>;
+
   /// `regularization` weights, on tets holding too few voxel centres, a continuous-mass term
   /// alpha * int_T (u - u_prev)^2 that anchors them to the previous (coarser) fit. Unlike a
   /// gradient penalty it does not bias a linear field, and it vanishes where the fit is good.
@@ -75,11 +80,12 @@ public:
 
   /// Re-gathers the moments of the listed tets (new or replaced); sizes to the mesh. With an
   /// importance, `fit` (vertex values, Extend-ed to the mesh) is the point the weights are taken at.
-  void UpdateMoments(const BisectionMesh& mesh, const std::vector<int>& tets, const std::vector<double>* fit = nullptr);
+  void UpdateMoments(const BisectionMesh& mesh, const std::vector<int>& tets, const std::vector<double>* fit = nullptr,
+    const Done& done = {});
   /// With an importance: brings every tet's moments to the weights at `fit` (vertex values,
   /// Extend-ed), as UpdateMoments of all tets would, bit for bit, but gathers only the tets that
   /// are new or replaced or whose voxels' weights can have changed. Returns the tets gathered.
-  long long Reweigh(const BisectionMesh& mesh, const std::vector<double>& fit);
+  long long Reweigh(const BisectionMesh& mesh, const std::vector<double>& fit, const Done& done = {});
   /// New vertices take their parents' values interpolated at their place on the edge: the
   /// previous fit, exactly, on the refined mesh.
   static void Extend(const BisectionMesh& mesh, std::vector<double>& x);
@@ -106,6 +112,8 @@ public:
 
 private:
   TetMoments Gather(const BisectionMesh& mesh, int t, const std::vector<double>* fit) const;
+  /// Gathers the listed tets in parallel, in slices when `done` is set.
+  void GatherAll(const BisectionMesh& mesh, const std::vector<int>& tets, const std::vector<double>* fit, const Done& done);
 
   const VoxelVolume& Volume;
   double Regularization;
