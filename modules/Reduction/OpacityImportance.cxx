@@ -92,7 +92,8 @@ double OpacityImportance::MaxSlope(double lo, double hi) const
   return g;
 }
 
-void OpacityImportance::Prepare(const VoxelVolume& vol, double floor, int radius)
+void OpacityImportance::Prepare(
+  const VoxelVolume& vol, double floor, int radius, const std::function<void(double)>& done)
 {
   if (!(floor > 0 && floor <= 1))
   {
@@ -133,6 +134,10 @@ void OpacityImportance::Prepare(const VoxelVolume& vol, double floor, int radius
     });
     lo.swap(tlo);
     hi.swap(thi);
+    if (done)
+    {
+      done(0.25 * (axis + 1));
+    }
   }
   Lo = std::move(lo);
   Hi = std::move(hi);
@@ -193,6 +198,10 @@ void OpacityImportance::Prepare(const VoxelVolume& vol, double floor, int radius
       PH[i] = std::max(fh, Hi[i]);
     }
   });
+  if (done)
+  {
+    done(1.0);
+  }
 }
 
 } // namespace art

@@ -15,6 +15,7 @@
 #include "VoxelVolume.h"
 
 #include <algorithm>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -43,7 +44,9 @@ public:
 
   /// Gathers each voxel's neighbourhood scalar range: min..max over its (2 radius + 1)^3 voxels.
   /// `floor` in (0, 1] is the least weight (keeps the fit's matrix SPD, abandons no region).
-  void Prepare(const VoxelVolume& volume, double floor, int radius = 2);
+  /// `done` (optional) is told the fraction done after each of its four voxel passes, on the
+  /// calling thread.
+  void Prepare(const VoxelVolume& volume, double floor, int radius = 2, const std::function<void(double)>& done = {});
 
   /// Weight of voxel i (sample f) in [floor, 1]: floor + (1 - floor) (g / g_max)^2, g the largest
   /// opacity slope over its neighbourhood's scalar range widened to hold `fit` (Prepare first): a

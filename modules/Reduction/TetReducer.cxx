@@ -254,30 +254,37 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
       reported = f;
     }
   };
-  // The first fit's passes over every voxel (one, and one per reweighing step when weighted) come
-  // first, then the refinement up to 95%; the last 5% (End) is the output's values and their
-  // errors over every voxel. The passes' share is their count against half a pass per level to
-  // come (levels gather only the tets they change): a 512 x 512 x 400 CT weighted to 200k tets
-  // spent 35 s of 69 in them, its bar at 0% throughout.
-  const int passes = 1 + (Opt.ScalarOpacity.empty() ? 0 : std::max(0, Opt.ReweighSteps));
+  // The first fit's passes over every voxel come first, then the refinement up to 95%; the last
+  // 5% (End) is the output's values and their errors over every voxel. Units of the first fit:
+  // the first gather 2, and when weighted the weights' set-up 1 and each reweighing step 1
+  // (it gathers only the tets whose weights can change). Their share of the bar is their count
+  // against half a unit per level to come (levels gather only the tets they change): a
+  // 512 x 512 x 400 CT weighted to 200k tets spent 35 s of 69 in them, its bar at 0% throughout.
+  const bool weighing = !Opt.ScalarOpacity.empty();
+  const int reweighs = weighing ? std::max(0, Opt.ReweighSteps) : 0;
+  const double units = 2.0 + (weighing ? 1.0 + reweighs : 0.0);
   const double levelsToGo =
     std::max(1.0, std::log(std::max(2.0, double(cap) / n0)) / std::log(1.0 + (Opt.RefineFraction > 0 ? Opt.RefineFraction : 0.2)));
-  const double startShare = 0.95 * passes / (passes + 0.5 * levelsToGo);
-  int pass = 0;
-  auto passDone = [&](double f) { advanceTo(startShare * (pass + f) / passes); };
+  const double startShare = 0.95 * units / (units + 0.5 * levelsToGo);
+  double unitsDone = 0;
+  auto during = [&](double size) {
+    return [&, size, from = unitsDone](double f) { advanceTo(startShare * (from + size * f) / units); };
+  };
   std::unique_ptr<OpacityImportance> importance;
-  if (!Opt.ScalarOpacity.empty())
+  if (weighing)
   {
     importance = std::make_unique<OpacityImportance>(Opt.ScalarOpacity);
     importance->SetIsoValues(Opt.IsoValues);
-    importance->Prepare(volume, Opt.ImportanceFloor, Opt.ImportanceRadius);
+    importance->Prepare(volume, Opt.ImportanceFloor, Opt.ImportanceRadius, during(1.0));
+    unitsDone += 1.0;
   }
   const bool weighted = importance != nullptr;
   const OpacityImportance* opacityCap = Opt.CapOpacity ? importance.get() : nullptr;
   LeastSquaresFit fit(volume, Opt.Regularization, importance.get());
   std::vector<int> touched(n0), all;
   std::iota(touched.begin(), touched.end(), 0);
-  fit.UpdateMoments(mesh, touched, nullptr, passDone);
+  fit.UpdateMoments(mesh, touched, nullptr, during(2.0));
+  unitsDone += 2.0;
   std::vector<double> x;
   int iterations = fit.Solve(mesh, x, Opt.SolverTolerance);
   // The weighted fit is iteratively reweighted: the weights are taken at the current fit, so
@@ -289,10 +296,10 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
     fit.Reweigh(mesh, x, done);
     iterations += fit.Solve(mesh, x, Opt.SolverTolerance);
   };
-  for (int k = 0; weighted && k < Opt.ReweighSteps; ++k)
+  for (int k = 0; k < reweighs; ++k)
   {
-    ++pass;
-    reweigh(passDone);
+    reweigh(during(1.0));
+    unitsDone += 1.0;
   }
   advanceTo(startShare);
 
@@ -320,6 +327,7 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
       RelocationOptions ro;
       ro.Sweeps = Opt.RelocateSweeps;
       ro.QualityFloor = Opt.RelocateQualityFloor;
+      ro.MeasureSse = false;
       VertexRelocator::Relocate(moved, volume, y, ro, importance.get(), progress);
       if (progress)
       {

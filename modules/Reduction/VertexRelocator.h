@@ -22,12 +22,13 @@ struct RelocationOptions
   int ScreenStride = 0;      ///< candidates screened on every s-th voxel per axis (0: automatic, up to 3)
   int ScreenVoxels = 64;     ///< the screening subsample keeps at least this many of a star's voxels
   int ExactCandidates = 1;   ///< the best screened candidates evaluated exactly
+  bool MeasureSse = true;    ///< fill RelocationStats' Sse* (two more voxel passes; the reducer refits and measures anyway)
 };
 
 struct RelocationStats
 {
   long long Visited = 0, Moved = 0; ///< vertex visits over all sweeps, and accepted moves
-  double SseBefore = 0, SseAfter = 0; ///< sum of squared errors over every voxel, before / after the sweeps (no refit)
+  double SseBefore = 0, SseAfter = 0; ///< sum of squared errors over every voxel, before / after the sweeps (no refit; with MeasureSse)
   int Sweeps = 0;
 };
 
