@@ -10,10 +10,16 @@ rm -rf "$work" && mkdir -p "$work/a" "$work/b"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 results() { { find "$1" -maxdepth 1 -name '*.result.json' 2>/dev/null || true; } | wc -l; }
 for d in a b; do
-  # The job's paths are relative to the job file, three folders below the source tree.
+  # The job's paths are relative to the job file (tests/jobs/, as the README runs it); the
+  # copy two folders deeper points at the source tree's data instead.
   mkdir -p "$work/$d/x/y" && cp "$src/tests/jobs/orbit_small.json" "$work/$d/x/y/job.json"
-  sed -i "s|../../../data/|$src/data/|" "$work/$d/x/y/job.json"
+  sed -i "s|\.\./\.\./data/|$src/data/|" "$work/$d/x/y/job.json"
 done
+# The README's `adaptivert batch tests/jobs/orbit_small.json` (from the source tree) needs the
+# job's data set where the job file points: it pointed one folder too far up, and every frame
+# failed with "no such file or directory".
+ds=$(sed -n 's|.*"datasets": *\["\([^"]*\)".*|\1|p' "$src/tests/jobs/orbit_small.json")
+[ -f "$src/tests/jobs/$ds" ] || fail "orbit_small.json's data set $ds is not there from tests/jobs/"
 
 # 1. Kill the batch once the first frames are finished, then resume.
 job=$work/a/x/y/job.json out=$work/a/x/y/frames

@@ -368,7 +368,7 @@ int Run(const cli::Options& o)
 cli::Registrar reg({ "batch",
   "render a job file of data sets x cameras x settings; CSV of time and error; resumable",
   "adaptivert batch [options] JOB.json",
-  "  adaptivert batch tests/jobs/orbit.json\n"
+  "  adaptivert batch tests/jobs/orbit_small.json\n"
   "  adaptivert batch job.json & adaptivert batch job.json   # two processes share the frames\n",
   Declare, Run });
 } // namespace
