@@ -77,7 +77,7 @@ int Run(const cli::Options& o)
   {
     cli::Json j;
     j.Set("a", pa).Set("b", pb).Set("rmse", m.rmse).Set("psnr_db", m.psnr).Set("ssim", m.ssim)
-      .Set("max_abs", m.maxAbs).Set("pass", failed.empty());
+      .Set("max_abs", m.maxAbs).Set("channels", m.channels == 3 ? "RGB" : "RGBA").Set("pass", failed.empty());
     std::printf("%s\n", j.Str().c_str());
   }
   else
@@ -93,6 +93,7 @@ int Run(const cli::Options& o)
     }
     std::printf("SSIM     %.5f\n", m.ssim);
     std::printf("max|d|   %.6f\n", m.maxAbs);
+    std::printf("over     %s\n", m.channels == 3 ? "RGB (both images are opaque)" : "RGBA");
   }
   if (!failed.empty())
   {
@@ -102,7 +103,7 @@ int Run(const cli::Options& o)
   return cli::ExitOk;
 }
 
-cli::Registrar reg({ "compare", "image error between two images: RMSE, PSNR, SSIM, a difference image",
+cli::Registrar reg({ "compare", "image error between two images: RMSE, PSNR, SSIM (over RGBA, or RGB when both are opaque), a difference image",
   "adaptivert compare [options] A B",
   "  adaptivert compare reference.png reduced.png --diff diff.png\n"
   "  adaptivert compare baseline.png out.png --min-psnr 40   # a regression check: exit 1 below 40 dB\n",

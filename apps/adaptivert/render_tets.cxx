@@ -471,8 +471,8 @@ int Run(const cli::Options& o, const std::string& input)
   if (haveRef)
   {
     std::printf("reference    %s: %.3f s\n", volume ? "voxel ray caster" : "exact rule on the mesh", rst.seconds);
-    std::printf("error        PSNR %.2f dB, SSIM %.4f, RMSE %.5f (RGBA, against the reference)\n", m.psnr, m.ssim,
-      m.rmse);
+    std::printf("error        PSNR %.2f dB, SSIM %.4f, RMSE %.5f (%s, against the reference)\n", m.psnr, m.ssim,
+      m.rmse, m.channels == 3 ? "RGB" : "RGBA");
   }
   std::printf("output       %s\n", view.output.c_str());
   return cli::ExitOk;

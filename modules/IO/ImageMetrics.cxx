@@ -23,6 +23,22 @@ void CheckSameSize(const Image& a, const Image& b)
   RequireFinite(b, "the second image");
 }
 
+// Alpha is left out when it is 1 in both images (written images are composited over a
+// background): a channel with no error would only dilute the others' (+1.25 dB of PSNR).
+int Channels(const Image& a, const Image& b)
+{
+  const auto& pa = a.Pixels();
+  const auto& pb = b.Pixels();
+  for (size_t i = 3; i < pa.size(); i += 4)
+  {
+    if (pa[i] != 1.f || pb[i] != 1.f)
+    {
+      return 4;
+    }
+  }
+  return 3;
+}
+
 // Separable Gaussian filter with the image edge clamped.
 std::vector<double> Blur(const std::vector<double>& in, int w, int h, const std::vector<double>& k)
 {
@@ -113,13 +129,17 @@ double RMSE(const Image& a, const Image& b)
   {
     return 0.0;
   }
+  const int channels = Channels(a, b);
   double s = 0;
   for (size_t i = 0; i < pa.size(); ++i)
   {
-    const double d = double(pa[i]) - double(pb[i]);
-    s += d * d;
+    if (static_cast<int>(i % 4) < channels)
+    {
+      const double d = double(pa[i]) - double(pb[i]);
+      s += d * d;
+    }
   }
-  return std::sqrt(s / double(pa.size()));
+  return std::sqrt(s / double(pa.size() / 4 * channels));
 }
 
 double PSNR(const Image& a, const Image& b)
@@ -146,12 +166,13 @@ double SSIM(const Image& a, const Image& b)
   {
     v /= ks;
   }
+  const int channels = Channels(a, b);
   double s = 0;
-  for (int c = 0; c < 4; ++c)
+  for (int c = 0; c < channels; ++c)
   {
     s += ChannelSSIM(a, b, c, k);
   }
-  return s / 4.0;
+  return s / channels;
 }
 
 ImageMetricsResult CompareImages(const Image& a, const Image& b)
@@ -160,6 +181,7 @@ ImageMetricsResult CompareImages(const Image& a, const Image& b)
   r.rmse = RMSE(a, b);
   r.psnr = r.rmse > 0 ? -20.0 * std::log10(r.rmse) : std::numeric_limits<double>::infinity();
   r.ssim = SSIM(a, b);
+  r.channels = Channels(a, b);
   for (size_t i = 0; i < a.Pixels().size(); ++i)
   {
     r.maxAbs = std::max(r.maxAbs, std::fabs(double(a.Pixels()[i]) - double(b.Pixels()[i])));

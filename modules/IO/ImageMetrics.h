@@ -1,6 +1,7 @@
 // ImageMetrics: RMSE and PSNR over RGBA (values in [0, 1], peak 1), and SSIM (Wang, Bovik,
 // Sheikh & Simoncelli 2004: 11x11 Gaussian window, sigma 1.5, K1 0.01, K2 0.03) averaged over
-// the four channels. Used for every accuracy figure the project reports.
+// the four channels; over RGB alone when alpha is 1 throughout both images (written, opaque
+// images). Used for every accuracy figure the project reports.
 #ifndef art_ImageMetrics_h
 #define art_ImageMetrics_h
 
@@ -17,6 +18,7 @@ struct ImageMetricsResult
   double psnr = 0.0; ///< dB; +infinity for identical images
   double ssim = 1.0;
   double maxAbs = 0.0; ///< largest absolute channel difference
+  int channels = 4;    ///< 3 when both images are opaque and alpha was left out
 };
 
 /// Throws art::Error naming `file` when a channel value is NaN or infinite (a float EXR or TIFF

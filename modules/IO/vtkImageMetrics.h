@@ -4,7 +4,9 @@
  *
  * Images may have 1 to 4 components of any scalar type; integer values are scaled by their
  * type's largest value (1/255 for unsigned char, 1/65535 for unsigned short), floating-point
- * values are taken as values in [0, 1]. Files are read as art::ReadImage reads them (PNG
+ * values are taken as values in [0, 1]. The figures are over RGBA, or over RGB when alpha is 1
+ * throughout both images (opaque images, as written ones are, or images without alpha): an
+ * error-free alpha would only dilute the others. Files are read as art::ReadImage reads them (PNG
  * through VTK; EXR, TIFF and others through OpenImageIO). After a successful Compare the
  * figures are available through the getters; on failure Compare returns false,
  * GetErrorMessage() says why and the figures are NaN (as before any comparison).

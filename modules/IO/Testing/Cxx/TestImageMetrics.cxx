@@ -41,6 +41,26 @@ TEST(ImageMetrics, ConstantOffsetGivesKnownRmseAndPsnr)
   EXPECT_NEAR(art::PSNR(a, b), 20.0, 1e-5);
 }
 
+// Written images are opaque: alpha 1 in both is left out, so RGB differing by 0.1 is 20 dB, as
+// an RGB-only tool reports (over RGBA the error-free alpha gave 21.25 dB). One pixel of alpha
+// below 1 brings alpha back into every figure.
+TEST(ImageMetrics, OpaqueImagesAreComparedOverRGB)
+{
+  Image a(32, 32, { 0.2f, 0.4f, 0.6f, 1.f });
+  Image b(32, 32, { 0.3f, 0.5f, 0.7f, 1.f });
+  const auto r = art::CompareImages(a, b);
+  EXPECT_EQ(r.channels, 3);
+  EXPECT_NEAR(r.rmse, 0.1, 1e-7);
+  EXPECT_NEAR(r.psnr, 20.0, 1e-5);
+  const double C1 = 1e-4;
+  auto lum = [&](double x, double y) { return (2 * x * y + C1) / (x * x + y * y + C1); };
+  EXPECT_NEAR(r.ssim, (lum(0.2, 0.3) + lum(0.4, 0.5) + lum(0.6, 0.7)) / 3, 1e-6);
+  b.Pixels()[3] = 0.5f;
+  const auto t = art::CompareImages(a, b);
+  EXPECT_EQ(t.channels, 4);
+  EXPECT_NEAR(t.rmse, std::sqrt((3 * 0.01 * 1024 + 0.25) / 4096), 1e-7);
+}
+
 TEST(ImageMetrics, SsimOfConstantImagesIsTheLuminanceTerm)
 {
   // For constant images the variances vanish: SSIM = (2ab + C1) / (a^2 + b^2 + C1).

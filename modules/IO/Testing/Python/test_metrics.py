@@ -8,14 +8,14 @@ from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkCommonCore import vtkFloatArray
 
 
-def constant_image(value, w=16, h=8):
+def constant_image(value, w=16, h=8, alpha=1.0):
     img = vtkImageData()
     img.SetDimensions(w, h, 1)
     a = vtkFloatArray()
     a.SetNumberOfComponents(4)
     a.SetNumberOfTuples(w * h)
     for i in range(w * h):
-        a.SetTuple4(i, value, value, value, 1.0)
+        a.SetTuple4(i, value, value, value, alpha)
     img.GetPointData().SetScalars(a)
     return img
 
@@ -23,7 +23,11 @@ def constant_image(value, w=16, h=8):
 m = adaptivert.vtkImageMetrics()
 assert math.isnan(m.GetRMSE()) and math.isnan(m.GetSSIM()), (m.GetRMSE(), m.GetSSIM())  # nothing compared yet
 assert m.Compare(constant_image(0.25), constant_image(0.35)), m.GetErrorMessage()
-# Three of four channels differ by 0.1: RMSE = sqrt(3/4) * 0.1.
+# Both opaque: alpha is left out, RGB differs by 0.1 (RMSE 0.1, PSNR 20 dB).
+assert abs(m.GetRMSE() - 0.1) < 1e-6, m.GetRMSE()
+assert abs(m.GetPSNR() - 20.0) < 1e-4, m.GetPSNR()
+# Translucent (alpha 0.5 in both): three of four channels differ by 0.1, RMSE = sqrt(3/4) * 0.1.
+assert m.Compare(constant_image(0.25, alpha=0.5), constant_image(0.35, alpha=0.5)), m.GetErrorMessage()
 expected = math.sqrt(0.75) * 0.1
 assert abs(m.GetRMSE() - expected) < 1e-6, m.GetRMSE()
 assert abs(m.GetPSNR() - (-20 * math.log10(expected))) < 1e-4, m.GetPSNR()
