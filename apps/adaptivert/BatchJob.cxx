@@ -54,6 +54,53 @@ std::string SettingValue(const std::string& key, const json& value, const fs::pa
 
 // {"tets": 20000, "exact": true} -> --tets 20000 --exact; false drops the flag, and so does a
 // setting only another kind of data takes (a job may hold volumes and triangle scenes alike).
+// Options that change what the picture shows, not how closely it is approximated: a setting
+// that sets one of them otherwise than the reference is scored against another picture (frames
+// with their own transfer function scored 14-18 dB; probe11).
+std::vector<std::string> LookNotes(const json& settings, const json& reference)
+{
+  static const std::set<std::string> approximation = { "tets", "max-error", "refinement", "relocate", "no-relocate",
+    "plain-reduction", "mesh-cache", "ert", "integrator", "threads", "verbose", "accelerator", "threshold",
+    "subdivisions", "plane-weight", "no-top-grid", "reference", "no-error" };
+  std::vector<std::string> notes;
+  if (!reference.is_object())
+  {
+    return notes;
+  }
+  for (size_t s = 0; s < settings.size(); ++s)
+  {
+    if (!settings[s].is_object())
+    {
+      continue;
+    }
+    std::set<std::string> keys;
+    for (const json* side : { &settings[s], &reference })
+    {
+      for (const auto& item : side->items())
+      {
+        const std::string& k = item.key();
+        if (!k.empty() && k[0] != '_' && !approximation.count(k) &&
+          (!settings[s].contains(k) || !reference.contains(k) || settings[s][k] != reference[k]))
+        {
+          keys.insert(k);
+        }
+      }
+    }
+    if (!keys.empty())
+    {
+      std::string list;
+      for (const auto& k : keys)
+      {
+        list += (list.empty() ? "" : ", ") + k;
+      }
+      notes.push_back("setting " + std::to_string(s) + " " + settings[s].dump() + " differs from the reference in " +
+        list + ": its error is against the reference's picture (give the reference the same " + list +
+        ", or such settings a job of their own)");
+    }
+  }
+  return notes;
+}
+
 std::vector<std::string> OptionsToArgs(
   const json& s, std::string& text, const std::string& file, const fs::path& base, const art::DataKind* kind)
 {
@@ -252,6 +299,10 @@ BatchJob LoadBatchJob(const std::string& path)
       throw art::Error("\"settings\" must be a non-empty list", path);
     }
     const bool withReference = j.contains("reference");
+    if (withReference)
+    {
+      job.notes = LookNotes(settings, j["reference"]);
+    }
     std::vector<BatchTask> refs, frames;
     std::set<std::string> stems;
     for (const auto& d : j["datasets"])

@@ -26,6 +26,9 @@ struct BatchJob
   std::string file;      ///< the job file
   std::string outputDir; ///< absolute
   std::vector<BatchTask> tasks; ///< references first, so others can compare as soon as possible
+  /// Settings whose picture differs from the reference's (their own tf, clip, iso, ...): their
+  /// error is against another picture. One line each, for the batch to say before it renders.
+  std::vector<std::string> notes;
 };
 
 /// Parses and expands a job file; throws art::Error naming the file and the problem (an unknown

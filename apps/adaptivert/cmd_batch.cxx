@@ -237,6 +237,10 @@ int Run(const cli::Options& o)
     throw cli::UsageError("needs exactly one JOB.json");
   }
   const cli::BatchJob job = cli::LoadBatchJob(o.Positional()[0]);
+  for (const auto& note : job.notes)
+  {
+    std::fprintf(stderr, "adaptivert: %s: note: %s\n", job.file.c_str(), note.c_str());
+  }
   std::error_code ec;
   fs::create_directories(job.outputDir, ec);
   if (!fs::is_directory(job.outputDir))
