@@ -354,10 +354,17 @@ Engine VTKEngine(Locator* loc, double far)
 
 void Declare(cli::Options& o)
 {
-  const std::string shared = std::string(ART_DATA_DIR) + "/../../shared/data/";
-  o.Add("tri-scenes", 0, "FILE,..", "triangles: scenes",
-    std::string(ART_DATA_DIR) + "/am_underworks.ply," + shared + "bunny.ply," + shared + "hydronex2.ply," + shared +
-      "oa_minia.ply");
+  // The larger scenes: where data/fetch puts them (data/full), else the development copy beside
+  // the source tree (../shared/data); named in data/full when neither holds them, so that the
+  // "skipped" line says where fetch would put them.
+  auto scene = [](const std::string& name) {
+    const std::string full = std::string(ART_DATA_DIR) + "/full/" + name;
+    const std::string shared = std::string(ART_DATA_DIR) + "/../../shared/data/" + name;
+    return std::filesystem::exists(full) || !std::filesystem::exists(shared) ? full : shared;
+  };
+  o.Add("tri-scenes", 0, "FILE,..", "triangles: scenes (data/fetch gets the bunny, hydronex2 and oa_minia)",
+    std::string(ART_DATA_DIR) + "/am_underworks.ply," + scene("bunny.ply") + "," + scene("hydronex2.ply") + "," +
+      scene("oa_minia.ply"));
   o.Add("tri-size", 0, "WxH", "triangles: primary rays per scene", "800x600");
   o.Add("tri-lights", 0, "N", "triangles: point lights (shadow rays per visible point)", "3");
   o.Add("tri-vtk-rays", 0, "N", "triangles: primary rays given to each VTK locator (a strided subset)", "20000");

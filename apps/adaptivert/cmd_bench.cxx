@@ -66,7 +66,7 @@ int Run(const cli::Options& o)
 }
 
 cli::Registrar reg({ "bench", "run a benchmark: tables, JSON and a PNG chart, against VTK and Embree",
-  "adaptivert bench [options] WHAT",
+  "adaptivert bench [options] tets|reduction|triangles",
   "  adaptivert bench triangles --results out/\n  adaptivert bench reduction --runs 3\n",
   Declare, Run });
 } // namespace

@@ -45,7 +45,7 @@ std::string Grouped(long long n)
 void Declare(cli::Options& o)
 {
   o.Add("output", 'o', "FILE", "the output .vtu, as render takes it (or give it after the input)");
-  o.Add("array", 0, "NAME", "point array to reduce (default: the active scalars); NAME:magnitude or NAME:N for a vector's magnitude or component N");
+  o.Add("array", 0, "NAME", "point array to reduce (default: the active scalars, else the first one-component array); NAME:magnitude or NAME:N for a vector's magnitude or component N");
   o.Add("tets", 't', "N", "stop at N tetrahedra (or N% of the voxel count)");
   o.Add("max-error", 'e', "E",
     "stop when the error (opacity-weighted with --tf) is at most E data units (E% of the scalar range)");

@@ -50,7 +50,7 @@ double Seconds(std::chrono::steady_clock::time_point t0)
 
 void Declare(cli::Options& o)
 {
-  o.Add("array", 0, "NAME", "point (or cell) array to render (default: the active scalars); NAME:magnitude or "
+  o.Add("array", 0, "NAME", "point (or cell) array to render (default: the active scalars, else the first one-component array); NAME:magnitude or "
     "NAME:N for a vector's magnitude or component N");
   o.Add("tf", 0, "NAME|FILE",
     "transfer function: a preset (auto = ct-skin-bone on CT in Hounsfield units, else grey-ramp; ct-skin-bone, "
@@ -67,7 +67,8 @@ void Declare(cli::Options& o)
   o.Add("ert", 0, "A", "early ray termination at this opacity (1 = off)", "0.99");
   o.Add("integrator", 0, "RULE", "segment rule: exact or trapezoid (the paper's)", "exact");
   o.Add("mip", 0, "", "maximum-intensity projection instead of emission-absorption");
-  o.Add("tets", 0, "N", "reduce a volume to about N adaptive tets first (or N% of the voxel count)");
+  o.Add("tets", 0, "N", "reduce a volume to about N adaptive tets first (or N% of the voxel count); without "
+    "--tets or --max-error a volume is cast through its full-resolution tets (5 per voxel cell)");
   o.Add("max-error", 0, "E",
     "reduce a volume until the RMS error (opacity-weighted unless --plain-reduction) is at most E data units "
     "(E% of the scalar range)");

@@ -26,8 +26,9 @@ long long ParseCount(const std::string& s, const std::string& what)
 std::string UsageText()
 {
   return "usage: adaptivert-view [options] FILE\n\n"
-         "Shows a volume (.mha .nii .vti .pvti .nrrd, DICOM folder), a mesh (.vtu .vts .vtr .pvtu .vtm)\n"
-         "or a triangle scene (.ply .obj .stl .vtp .pvtp), or a legacy .vtk file of any of them, in a window.\n"
+         "Shows a volume (.mha .mhd .nii .nii.gz .vti .pvti .nrrd .nhdr, DICOM folder), a mesh (.vtu .vts\n"
+         ".vtr, their parallel .pvtu .pvts .pvtr, .vtm) or a triangle scene (.ply .obj .stl .vtp .pvtp),\n"
+         "or a legacy .vtk file of any of them, in a window.\n"
          "Volumes are reduced to adaptive tets in the background (levels from one run, fitted\n"
          "where the transfer function shows the data, vertices relocated, as `adaptivert render`\n"
          "does) and ray cast cell by cell (vtkTetRayCastMapper);\n"
