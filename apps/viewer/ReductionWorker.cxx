@@ -11,7 +11,10 @@ ReductionWorker::ReductionWorker(
   : Volume(std::move(volume))
   , Budgets(std::move(budgets))
   , Options(std::move(options))
-  , Prog([this](double f, const std::string&) { this->Fraction = f; })
+  , Prog([this](double f, const std::string& stage) {
+    this->Relocating = stage == "relocate";
+    this->Fraction = f;
+  })
 {
 }
 
@@ -67,6 +70,7 @@ ReductionWorker::Status ReductionWorker::Poll() const
   std::lock_guard<std::mutex> g(Lock);
   Status s;
   s.Fraction = Done ? 1.0 : Fraction.load();
+  s.Relocating = !Done && Relocating.load();
   s.LevelsReady = Made;
   s.Finished = Done;
   s.Error = Failure;

@@ -23,7 +23,8 @@ class ReductionWorker
 public:
   struct Status
   {
-    double Fraction = 0;  ///< overall progress in [0, 1]
+    double Fraction = 0;  ///< progress of the current stage in [0, 1]
+    bool Relocating = false; ///< the stage: moving a level's vertices (its own 0 -> 1), else refining
     int LevelsReady = 0;  ///< levels made so far (taken or not)
     bool Finished = false;
     double Seconds = 0;   ///< since Start, or the whole run once finished
@@ -55,6 +56,7 @@ private:
   std::vector<long long> Budgets;
   art::ReducerOptions Options;
   std::atomic<double> Fraction{ 0.0 };
+  std::atomic<bool> Relocating{ false };
   art::Progress Prog;
   mutable std::mutex Lock;
   std::vector<art::ReducedMesh> Ready;

@@ -150,7 +150,9 @@ void ViewerApp::Internals::PollReduction()
   {
     // Every redraw re-casts the volume, so the bar is redrawn at most twice a second.
     const int filled = percent / 5;
-    bar = "reducing [" + std::string(filled, '#') + std::string(20 - filled, '.') + "] " + std::to_string(percent) +
+    // Relocation runs at each level the refinement emits, with its own 0 -> 100%.
+    bar = std::string(st.Relocating ? "relocating level " + std::to_string(st.LevelsReady + 1) + " [" : "reducing [") +
+      std::string(filled, '#') + std::string(20 - filled, '.') + "] " + std::to_string(percent) +
       "%, " + std::to_string(st.LevelsReady) + "/" + std::to_string(Worker->NumberOfBudgets()) + " levels";
     LastPercent = percent;
     LastProgressRender = Now();
