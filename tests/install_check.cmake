@@ -10,6 +10,11 @@ execute_process(COMMAND "${PREFIX}/bin/adaptivert" --version RESULT_VARIABLE rc 
 if(rc OR NOT out MATCHES "^adaptivert [0-9]")
   message(FATAL_ERROR "installed adaptivert does not run: ${out}${err}")
 endif()
+# The installed tool's defaults are its own copies (the demo's CT head), not the source tree's.
+execute_process(COMMAND "${PREFIX}/bin/adaptivert" demo --help RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc OR NOT out MATCHES "${PREFIX}/share/adaptivert/data/ct-head-128.mha" OR NOT EXISTS "${PREFIX}/share/adaptivert/scripts/speed_accuracy_chart.py")
+  message(FATAL_ERROR "installed adaptivert does not default to its installed data: ${out}${err}")
+endif()
 # An EXR goes through the OpenImageIO plug-in, which the installed libraries must find beside them.
 execute_process(COMMAND "${PREFIX}/bin/adaptivert" render "${SOURCE}/data/ct-head-128.mha" -o "${PREFIX}/check.exr"
   --size 8x8 --tets 500 --no-error -q RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -16,6 +16,7 @@
 #include "ReductionBaselines.h"
 #include "ReductionTargets.h"
 #include "TetReducer.h"
+#include "ResourcePath.h"
 
 #include <vtkImageData.h>
 #include <vtkUnstructuredGrid.h>
@@ -77,7 +78,7 @@ long long ParseBudget(const std::string& s, long long voxels)
 void Declare(cli::Options& o)
 {
   o.Add("red-input", 0, "FILE", "reduction: the volume (data/fetch gives the full CT in data/full/ct-head.mha)",
-    std::string(ART_DATA_DIR) + "/ct-head-128.mha");
+    cli::DataDir() + "/ct-head-128.mha");
   o.Add("red-levels", 0, "LIST", "reduction: budgets, % of the voxel count or tets",
     "0.01%,0.03%,0.05%,0.1%,0.2%,1%");
   o.Add("red-timed-tets", 0, "N", "reduction: also time a separate run to N tets (0: skip)", "200000");

@@ -23,6 +23,7 @@
 #ifdef ART_HAVE_Reduction
 #include "ReducerVTK.h"
 #include "TetReducer.h"
+#include "ResourcePath.h"
 #endif
 
 #include <vtkCamera.h>
@@ -149,7 +150,7 @@ private:
 
 void Declare(cli::Options& o)
 {
-  o.Add("tets-input", 0, "FILE", "volume for `bench tets`", std::string(ART_DATA_DIR) + "/ct-head-128.mha");
+  o.Add("tets-input", 0, "FILE", "volume for `bench tets`", cli::DataDir() + "/ct-head-128.mha");
   o.Add("tets-levels", 0, "N,N..", "tet budgets of the reduction series", "10000,25000,50000,100000,250000");
   o.Add("tets-size", 0, "WxH", "image size for `bench tets`", "500x500");
   o.Add("tets-tf", 0, "NAME|FILE", "transfer function for `bench tets`", "ct-skin-bone");

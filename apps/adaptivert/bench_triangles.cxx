@@ -18,6 +18,7 @@
 #include "TriangleBench.h"
 
 #include "vtkTriangleGridLocator.h"
+#include "ResourcePath.h"
 
 #include <vtkCamera.h>
 #include <vtkCellLocator.h>
@@ -363,7 +364,7 @@ void Declare(cli::Options& o)
     return std::filesystem::exists(full) || !std::filesystem::exists(shared) ? full : shared;
   };
   o.Add("tri-scenes", 0, "FILE,..", "triangles: scenes (data/fetch gets the bunny, hydronex2 and oa_minia)",
-    std::string(ART_DATA_DIR) + "/am_underworks.ply," + scene("bunny.ply") + "," + scene("hydronex2.ply") + "," +
+    cli::DataDir() + "/am_underworks.ply," + scene("bunny.ply") + "," + scene("hydronex2.ply") + "," +
       scene("oa_minia.ply"));
   o.Add("tri-size", 0, "WxH", "triangles: primary rays per scene", "800x600");
   o.Add("tri-lights", 0, "N", "triangles: point lights (shadow rays per visible point)", "3");

@@ -12,6 +12,7 @@
 #include "ImageMetrics.h"
 #include "ProgressBar.h"
 #include "Subprocess.h"
+#include "ResourcePath.h"
 
 #include <nlohmann/json.hpp>
 
@@ -210,7 +211,7 @@ void WriteSummary(const cli::BatchJob& job, const std::string& csvPath, const st
   }
   art::WriteFileAtomic(csvPath, csv.str());
   // The chart is drawn by matplotlib; a machine without it still gets the CSV.
-  const std::string script = std::string(ART_SCRIPT_DIR) + "/speed_accuracy_chart.py";
+  const std::string script = cli::ResourcePath("scripts", ART_SCRIPT_DIR) + "/speed_accuracy_chart.py";
   if (fs::exists("/usr/bin/python3") && fs::exists(script))
   {
     const auto r = cli::RunProgram({ "/usr/bin/python3", script, csvPath, chartPath,

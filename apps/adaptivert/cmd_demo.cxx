@@ -5,6 +5,7 @@
 #include "Command.h"
 #include "DataLoader.h"
 #include "Error.h"
+#include "ResourcePath.h"
 
 #include <cstdio>
 #include <string>
@@ -14,7 +15,7 @@ namespace
 {
 void Declare(cli::Options& o)
 {
-  o.Add("input", 'i', "FILE", "volume to use", std::string(ART_DATA_DIR) + "/ct-head-128.mha");
+  o.Add("input", 'i', "FILE", "volume to use", cli::DataDir() + "/ct-head-128.mha");
   o.Add("output", 'o', "FILE", "image to write", "adaptivert-demo.png");
   o.Add("tets", 0, "N", "tet budget of the reduction", "100000");
   o.Add("size", 's', "WxH", "image size", "500x500");
