@@ -55,6 +55,21 @@ Counters ForEachRange(long long n, long long grain,
   return total;
 }
 
+void ForEachRangeInSlices(long long n, long long grain, int slices,
+  const std::function<void(long long, long long, Counters&)>& fn, const std::function<void(long long)>& between)
+{
+  const long long slice = between ? std::max(1LL, (n + slices - 1) / std::max(1, slices)) : std::max(1LL, n);
+  for (long long s0 = 0; s0 < n; s0 += slice)
+  {
+    const long long s1 = std::min(n, s0 + slice);
+    ForEachRange(s1 - s0, grain, [&](long long b, long long e, Counters& c) { fn(s0 + b, s0 + e, c); });
+    if (between)
+    {
+      between(s1);
+    }
+  }
+}
+
 Counters ForEachTile(int width, int height, int tileSize,
   const std::function<void(const Tile&, Counters&)>& fn, Progress* progress)
 {

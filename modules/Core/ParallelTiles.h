@@ -32,6 +32,12 @@ ADAPTIVERTCORE_EXPORT Counters ForEachTile(int width, int height, int tileSize,
 /// Runs fn(begin, end, counters) over [0, n) in chunks of `grain`, in parallel.
 ADAPTIVERTCORE_EXPORT Counters ForEachRange(long long n, long long grain,
   const std::function<void(long long, long long, Counters&)>& fn, Progress* progress = nullptr);
+
+/// ForEachRange over [0, n) in `slices` consecutive slices, calling between(end) on the calling
+/// thread after each: progress and cancellation of a long pass from the driver thread, where
+/// VTK's observers must run. One slice (no pause) without `between`.
+ADAPTIVERTCORE_EXPORT void ForEachRangeInSlices(long long n, long long grain, int slices,
+  const std::function<void(long long, long long, Counters&)>& fn, const std::function<void(long long)>& between);
 } // namespace art
 
 #endif

@@ -152,21 +152,15 @@ void LeastSquaresFit::GatherAll(
 {
   const long long n = static_cast<long long>(tets.size());
   // Twenty slices tell the progress every 5%; each is still thousands of tets on a large mesh.
-  const long long slice = done ? std::max(1LL, (n + 19) / 20) : std::max(1LL, n);
-  for (long long s0 = 0; s0 < n; s0 += slice)
-  {
-    const long long s1 = std::min(n, s0 + slice);
-    ForEachRange(s1 - s0, 64, [&](long long b, long long e, Counters&) {
-      for (long long i = s0 + b; i < s0 + e; ++i)
+  ForEachRangeInSlices(
+    n, 64, 20,
+    [&](long long b, long long e, Counters&) {
+      for (long long i = b; i < e; ++i)
       {
         Mom[tets[i]] = Gather(mesh, tets[i], fit);
       }
-    });
-    if (done)
-    {
-      done(static_cast<double>(s1) / static_cast<double>(n));
-    }
-  }
+    },
+    done ? std::function<void(long long)>([&](long long end) { done(double(end) / double(n)); }) : nullptr);
 }
 
 long long LeastSquaresFit::Reweigh(const BisectionMesh& mesh, const std::vector<double>& fit, const Done& done)

@@ -25,26 +25,22 @@ i128 Orient(const LatticePoint& a, const LatticePoint& b, const LatticePoint& c,
   return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
 }
 
-// ForEachRange over [0, n) in ten slices, each followed on the calling thread by `units` / 10 of
-// progress and a look at the cancel flag: the set-up's voxel passes take seconds on a large
-// volume, and VTK's progress must come from the driver thread.
+// ForEachRange in ten slices, each followed on the calling thread by its share of `units` of
+// progress and a look at the cancel flag: the set-up's voxel passes take seconds on a large volume.
 template <class F>
 void ForEachSlice(long long n, long long grain, Progress* progress, double units, F&& f)
 {
-  const long long slice = progress ? std::max(1LL, (n + 9) / 10) : std::max(1LL, n);
-  for (long long s0 = 0; s0 < n; s0 += slice)
-  {
-    const long long s1 = std::min(n, s0 + slice);
-    ForEachRange(s1 - s0, grain, [&](long long b, long long e, Counters& c) { f(s0 + b, s0 + e, c); });
-    if (progress)
-    {
+  long long done = 0;
+  ForEachRangeInSlices(n, grain, 10, f,
+    progress ? std::function<void(long long)>([&](long long end) {
       if (progress->Cancelled())
       {
         throw Error("cancelled");
       }
-      progress->Advance(units * double(s1 - s0) / double(n));
-    }
-  }
+      progress->Advance(units * double(end - done) / double(n));
+      done = end;
+    })
+             : nullptr);
 }
 
 class Relocator
