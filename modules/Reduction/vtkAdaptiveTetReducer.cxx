@@ -14,6 +14,8 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkDataSetAttributes.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMultiBlockDataSet.h>
@@ -102,19 +104,24 @@ int vtkAdaptiveTetReducer::FillOutputPortInformation(int port, vtkInformation* i
 int vtkAdaptiveTetReducer::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  // The fit needs every voxel: always ask for the whole extent.
+  // The fit needs every voxel: always ask for the whole extent, as one piece. The piece request
+  // copied from the output (a parallel writer, ParaView in parallel) made an image source split
+  // its extent: each piece was a reduction of one slab, with the whole budget.
   vtkInformation* in = inputVector[0]->GetInformationObject(0);
   if (in->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
   {
     in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
       in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
   }
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
   in->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
   return 1;
 }
 
 int vtkAdaptiveTetReducer::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
@@ -122,6 +129,12 @@ int vtkAdaptiveTetReducer::RequestData(
   // A run that fails or is aborted leaves no figures of an earlier one behind.
   this->RMSError = this->MaxError = this->BuildSeconds = std::numeric_limits<double>::quiet_NaN();
   this->WeightedRMSError = this->WeightedMaxError = std::numeric_limits<double>::quiet_NaN();
+  // One mesh for the whole volume: piece 0 of a piece request holds it, the other pieces are
+  // empty (they held a copy each, or a reduction of their slab), so the pieces add up to it.
+  const int port = request && request->Has(vtkExecutive::FROM_OUTPUT_PORT()) ? request->Get(vtkExecutive::FROM_OUTPUT_PORT()) : 0;
+  vtkInformation* outInfo = outputVector->GetInformationObject(port >= 0 && port < 2 ? port : 0);
+  const bool emptyPiece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0;
   if (this->TargetTets <= 0 && this->TargetError < 0)
   {
     vtkErrorMacro("Set TargetTets or TargetError.");
@@ -244,6 +257,17 @@ int vtkAdaptiveTetReducer::RequestData(
     const art::VoxelVolume volume = art::VolumeFromImage(image);
     vtkDataArray* s = image->GetPointData()->GetScalars();
     const bool asDouble = s->GetDataType() == VTK_DOUBLE;
+    if (emptyPiece)
+    {
+      // No tets, but the points and arrays of piece 0 (a parallel writer's summary is made from
+      // the last piece it wrote: it found no points there).
+      art::ReducedMesh none;
+      none.ScalarName = volume.Name;
+      output->ShallowCopy(art::ToUnstructuredGrid(none, asDouble));
+      output->GetFieldData()->Initialize();
+      levels->Initialize();
+      return 1;
+    }
     const std::vector<art::ReducedMesh> meshes = art::TetReducer(opt).Run(volume, &progress);
     if (meshes.empty())
     {

@@ -21,6 +21,8 @@
  * at its centre, as the file loader reads them: the mesh spans the cell centres.
  * The input needs one scalar component and at least 2 voxels along each axis; any scalar type,
  * spacing, origin and direction. Progress events are fired between refinement levels.
+ * The whole extent is always read as one piece; under a piece request (a parallel writer,
+ * ParaView in parallel) piece 0 holds the mesh and the other pieces are empty.
  */
 #ifndef vtkAdaptiveTetReducer_h
 #define vtkAdaptiveTetReducer_h
