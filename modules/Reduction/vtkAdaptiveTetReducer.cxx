@@ -255,8 +255,9 @@ int vtkAdaptiveTetReducer::RequestData(
       image = reduced;
     }
     const art::VoxelVolume volume = art::VolumeFromImage(image);
-    vtkDataArray* s = image->GetPointData()->GetScalars();
-    const bool asDouble = s->GetDataType() == VTK_DOUBLE;
+    // Double for the types VolumeFromImage reads as double (int32 and 64-bit too), as reduce writes
+    // them: int32 values past 2^24 were rounded in a float array the figures knew nothing of.
+    const bool asDouble = volume.DoubleValues;
     if (emptyPiece)
     {
       // No tets, but the points and arrays of piece 0 (a parallel writer's summary is made from

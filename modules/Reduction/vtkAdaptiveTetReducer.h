@@ -8,7 +8,7 @@
  * (whichever is set; with both, whichever comes first).
  *
  * Output port 0: vtkUnstructuredGrid of VTK_TETRA with point scalars named like the input (the
- * fit at each vertex), cell arrays "approximation_error" (RMS over the voxels a tet owns) and
+ * fit at each vertex; double for double, 32- and 64-bit integer input, else float), cell arrays "approximation_error" (RMS over the voxels a tet owns) and
  * "max_error", and field data rms_error, max_error, tets, vertices, build_seconds,
  * target_tets, target_error and source_spacing (the input's mean voxel spacing, which a
  * transfer-function preset's opacity unit distance follows). Output port 1: a vtkMultiBlockDataSet holding one such grid per
