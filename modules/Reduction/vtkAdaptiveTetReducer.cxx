@@ -216,7 +216,15 @@ int vtkAdaptiveTetReducer::RequestData(
     {
       onCells = onCells || cd->GetAbstractArray(i) == chosen;
     }
-    if (!chosen && !input->GetPointData()->GetScalars())
+    const bool askedCells = asked && asked->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
+      asked->Get(vtkDataObject::FIELD_ASSOCIATION()) == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+    if (!chosen && !askedCells)
+    {
+      // No active point scalars: the first one-component point array, as `reduce` takes it (the
+      // cell fallback below reduced a cell array such as cell ids before the point data).
+      chosen = art::ChooseArray(input->GetPointData(), "");
+    }
+    if (!chosen)
     {
       // Values on the cells only (labels, finite-volume output): they are the voxels.
       chosen = art::ChooseArray(cd, "");

@@ -15,9 +15,10 @@
  * level added with AddLevel (a nested series from one run, coarsest first) and the final grid
  * (GetOutputDataObject(1); GetOutput(1) casts it to a grid and gives null, from Python None).
  *
- * The reduced array is the point scalars, or the one given with SetInputArrayToProcess(0, 0, 0,
+ * The reduced array is the point scalars (without them the first one-component point array, as
+ * `adaptivert reduce` takes it), or the one given with SetInputArrayToProcess(0, 0, 0,
  * vtkDataObject::FIELD_ASSOCIATION_POINTS, name). Values on the cells (the cell scalars of an image
- * without point scalars, or a cell array given with FIELD_ASSOCIATION_CELLS) are one voxel per cell
+ * without point arrays, or a cell array given with FIELD_ASSOCIATION_CELLS) are one voxel per cell
  * at its centre, as the file loader reads them: the mesh spans the cell centres.
  * The input needs one scalar component and at least 2 voxels along each axis; any scalar type,
  * spacing, origin and direction. Progress events are fired between refinement levels.

@@ -57,4 +57,25 @@ r = adaptivert.vtkAdaptiveTetReducer()
 r.SetInputData(img)
 r.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_CELLS, "pressure")
 check(r, "cell array chosen beside point scalars")
+
+# Point arrays none of which is active, beside a cell array (numpy_support + AddArray, many .vti
+# files): the first one-component point array is reduced, as `reduce` takes it; the cell array
+# was reduced instead, and point arrays alone were 'the image has no point scalars'.
+img.GetPointData().SetActiveScalars(None)
+ids = vtkFloatArray()
+ids.SetName("cell_id")
+ids.SetNumberOfTuples(img.GetNumberOfCells())
+for c in range(img.GetNumberOfCells()):
+    ids.SetTuple1(c, c)
+img.GetCellData().SetScalars(ids)
+for with_cells in (True, False):
+    if not with_cells:
+        img.GetCellData().Initialize()
+    r = adaptivert.vtkAdaptiveTetReducer()
+    r.SetInputData(img)
+    r.SetTargetTets(24)
+    r.Update()
+    got = r.GetOutput().GetPointData().GetScalars()
+    print(f"inactive point arrays, cell array {with_cells}: reduced {got.GetName() if got else None}")
+    assert got is not None and got.GetName() == "other", with_cells
 print("ok")
