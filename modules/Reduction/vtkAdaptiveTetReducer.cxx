@@ -197,17 +197,23 @@ int vtkAdaptiveTetReducer::RequestData(
     vtkImageData* image = input;
     vtkDataArray* chosen = this->GetInputArrayToProcess(0, inputVector);
     vtkInformation* asked = this->GetInputArrayInformation(0);
+    const bool askedCells = asked && asked->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
+      asked->Get(vtkDataObject::FIELD_ASSOCIATION()) == vtkDataObject::FIELD_ASSOCIATION_CELLS;
     if (!chosen && asked && asked->Has(vtkDataObject::FIELD_NAME()))
     {
-      // A named array that is not there: say so (it used to reduce the active scalars instead).
+      // A named array that is not there: say so (it used to reduce the active scalars instead),
+      // naming the association asked for (a missing cell array was 'no point array').
+      vtkDataSetAttributes* where = askedCells ? static_cast<vtkDataSetAttributes*>(input->GetCellData())
+                                               : static_cast<vtkDataSetAttributes*>(input->GetPointData());
+      const char* kind = askedCells ? "cell" : "point";
       std::string names;
-      for (int i = 0; i < input->GetPointData()->GetNumberOfArrays(); ++i)
+      for (int i = 0; i < where->GetNumberOfArrays(); ++i)
       {
-        const char* n = input->GetPointData()->GetArrayName(i);
+        const char* n = where->GetArrayName(i);
         names += std::string(i ? ", " : "") + (n ? n : "(unnamed)");
       }
-      vtkErrorMacro(<< "The input has no point array '" << asked->Get(vtkDataObject::FIELD_NAME())
-                    << "' (point arrays: " << (names.empty() ? "none" : names) << ").");
+      vtkErrorMacro(<< "The input has no " << kind << " array '" << asked->Get(vtkDataObject::FIELD_NAME()) << "' ("
+                    << kind << " arrays: " << (names.empty() ? "none" : names) << ").");
       return 0;
     }
     vtkCellData* cd = input->GetCellData();
@@ -216,8 +222,6 @@ int vtkAdaptiveTetReducer::RequestData(
     {
       onCells = onCells || cd->GetAbstractArray(i) == chosen;
     }
-    const bool askedCells = asked && asked->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
-      asked->Get(vtkDataObject::FIELD_ASSOCIATION()) == vtkDataObject::FIELD_ASSOCIATION_CELLS;
     if (!chosen && !askedCells)
     {
       // No active point scalars: the first one-component point array, as `reduce` takes it (the

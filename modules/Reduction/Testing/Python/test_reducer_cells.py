@@ -78,4 +78,27 @@ for with_cells in (True, False):
     got = r.GetOutput().GetPointData().GetScalars()
     print(f"inactive point arrays, cell array {with_cells}: reduced {got.GetName() if got else None}")
     assert got is not None and got.GetName() == "other", with_cells
+
+# A misspelt cell array is named as a cell array, with the cell arrays listed (it said 'no point
+# array' and listed the point arrays).
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.vtkConstants import VTK_STRING
+from vtkmodules.vtkCommonCore import vtkCommand
+img.GetCellData().AddArray(cells)
+messages = []
+
+
+@calldata_type(VTK_STRING)
+def on_error(caller, event, text):
+    messages.append(text)
+
+
+r = adaptivert.vtkAdaptiveTetReducer()
+r.SetInputData(img)
+r.SetTargetTets(24)
+r.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_CELLS, "presure")
+r.AddObserver(vtkCommand.ErrorEvent, on_error)
+r.Update()
+print(messages)
+assert len(messages) == 1 and "no cell array 'presure' (cell arrays: pressure)" in messages[0], messages
 print("ok")
