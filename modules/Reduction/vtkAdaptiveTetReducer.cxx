@@ -9,6 +9,7 @@
 
 #include <algorithm>
 
+#include <vtkAbstractArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -175,6 +176,12 @@ int vtkAdaptiveTetReducer::RequestData(
     {
       opt.Levels.push_back(l);
     }
+    else if (l > 0)
+    {
+      // Port 1 had fewer blocks than levels added, without a word (probe12); reduce refuses it.
+      vtkWarningMacro("Level " << l << " is not below TargetTets " << this->TargetTets
+                                << ": the final grid is that level; it is left out of the levels.");
+    }
   }
   // Progress is reported from the driver loop (this thread), never from worker threads. An
   // observer's SetAbortExecute(1) cancels the reduction at the next level, as VTK's filters stop.
@@ -294,12 +301,37 @@ int vtkAdaptiveTetReducer::RequestData(
     this->BuildSeconds = last.BuildSeconds;
     this->WeightedRMSError = last.WeightedRms;
     this->WeightedMaxError = last.WeightedMax;
+    // The input's field data passes through, as VTK's dataset filters pass it, beside the
+    // reduction's own figures (which win a clash of names).
+    auto passFieldData = [input](vtkDataObject* out) {
+      vtkFieldData* in = input->GetFieldData();
+      for (int a = 0; in && a < in->GetNumberOfArrays(); ++a)
+      {
+        vtkAbstractArray* array = in->GetAbstractArray(a);
+        if (array && array->GetName() && !out->GetFieldData()->HasArray(array->GetName()))
+        {
+          out->GetFieldData()->AddArray(array);
+        }
+      }
+    };
+    passFieldData(output);
     levels->SetNumberOfBlocks(static_cast<unsigned int>(meshes.size()));
     for (unsigned int i = 0; i < meshes.size(); ++i)
     {
-      levels->SetBlock(i, art::ToUnstructuredGrid(meshes[i], asDouble));
+      vtkSmartPointer<vtkUnstructuredGrid> block = art::ToUnstructuredGrid(meshes[i], asDouble);
+      passFieldData(block);
+      levels->SetBlock(i, block);
       levels->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(),
         ("tets_" + std::to_string(meshes[i].NumberOfTets())).c_str());
+    }
+    // A level an error target stopped short of is not among the blocks: say so, as reduce does.
+    for (long long l : opt.Levels)
+    {
+      if (std::none_of(meshes.begin(), meshes.end() - 1, [l](const art::ReducedMesh& m) { return m.TargetTets == l; }))
+      {
+        vtkWarningMacro("Level " << l << " was not reached: the reduction stopped at " << last.NumberOfTets()
+                                  << " tets.");
+      }
     }
   }
   catch (const art::Error& e)
