@@ -21,6 +21,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -75,7 +76,9 @@ int Run(const cli::Options& o)
                                                            : "needs an input volume and an output .vtu");
   }
   const std::string in = pos[0], outPath = o.Has("output") ? o.Get("output") : pos[1];
-  if (std::filesystem::path(outPath).extension() != ".vtu")
+  std::string ext = std::filesystem::path(outPath).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext != ".vtu") // any case, as SaveMesh takes it (OUT.VTU)
   {
     throw cli::UsageError("the output must be a .vtu file, got '" + outPath + "'");
   }
@@ -169,6 +172,16 @@ int Run(const cli::Options& o)
   const double pct = range > 0 ? 100.0 / range : 0.0;
   std::vector<cli::Json> levels;
   const std::filesystem::path op(outPath);
+  // Every mesh is checked before any file is written: a failed check must not have replaced
+  // an existing OUT.vtu already.
+  for (const auto& m : meshes)
+  {
+    const auto mq = art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets());
+    if (!mq.Valid())
+    {
+      throw art::Error("internal: a reduced mesh failed its conformity check: " + mq.Summary(), outPath);
+    }
+  }
   for (size_t i = 0; i < meshes.size(); ++i)
   {
     const auto& m = meshes[i];
@@ -212,10 +225,6 @@ int Run(const cli::Options& o)
   }
   const auto& f = meshes.back();
   const auto q = art::MeasureQuality(f.Points.data(), f.NumberOfVertices(), f.Tets.data(), f.NumberOfTets());
-  if (!q.Valid())
-  {
-    throw art::Error("internal: the output mesh failed its conformity check: " + q.Summary(), outPath);
-  }
   if (json)
   {
     cli::Json j;

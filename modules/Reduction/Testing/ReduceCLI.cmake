@@ -41,6 +41,9 @@ art_reduce_cli_test(reduce_budget_out_of_range EXIT 2 STDERR "--tets '1e300' is 
   ARGS reduce "${_ct}" "${_out}/x.vtu" --tets 1e300)
 art_reduce_cli_test(reduce_bad_output EXIT 2 STDERR "output must be a .vtu" ONE_LINE_STDERR
   ARGS reduce "${_ct}" "${_out}/x.png" --tets 100)
+# The extension in any case, as the mesh writer takes it (OUT.VTU was a usage error; probe12).
+art_reduce_cli_test(reduce_upper_case_vtu EXIT 0 STDOUT "output +[^ ]*/UPPER.VTU: "
+  ARGS reduce "${_ct}" "${_out}/UPPER.VTU" --tets 100)
 art_reduce_cli_test(reduce_missing_file EXIT 1 STDERR "nonexistent.mha: no such file" ONE_LINE_STDERR
   ARGS reduce "${CMAKE_SOURCE_DIR}/tests/data/bad/nonexistent.mha" "${_out}/x.vtu" --tets 100)
 art_reduce_cli_test(reduce_surface_input EXIT 1 STDERR "am_underworks.ply: " ONE_LINE_STDERR
