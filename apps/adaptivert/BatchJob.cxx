@@ -52,8 +52,6 @@ std::string SettingValue(const std::string& key, const json& value, const fs::pa
   return v;
 }
 
-// {"tets": 20000, "exact": true} -> --tets 20000 --exact; false drops the flag, and so does a
-// setting only another kind of data takes (a job may hold volumes and triangle scenes alike).
 // Options that change what the picture shows, not how closely it is approximated: a setting
 // that sets one of them otherwise than the reference is scored against another picture (frames
 // with their own transfer function scored 14-18 dB; probe11).
@@ -101,6 +99,8 @@ std::vector<std::string> LookNotes(const json& settings, const json& reference)
   return notes;
 }
 
+// {"tets": 20000, "exact": true} -> --tets 20000 --exact; false drops the flag, and so does a
+// setting only another kind of data takes (a job may hold volumes and triangle scenes alike).
 std::vector<std::string> OptionsToArgs(
   const json& s, std::string& text, const std::string& file, const fs::path& base, const art::DataKind* kind)
 {
