@@ -101,8 +101,8 @@ std::vector<std::string> LookNotes(const json& settings, const json& reference)
 
 // {"tets": 20000, "exact": true} -> --tets 20000 --exact; false drops the flag, and so does a
 // setting only another kind of data takes (a job may hold volumes and triangle scenes alike).
-std::vector<std::string> OptionsToArgs(
-  const json& s, std::string& text, const std::string& file, const fs::path& base, const art::DataKind* kind)
+std::vector<std::string> OptionsToArgs(const json& s, std::string& text, const std::string& file, const fs::path& base,
+  const art::DataKind* kind, std::vector<std::string>* dropped = nullptr)
 {
   if (!s.is_object())
   {
@@ -138,6 +138,10 @@ std::vector<std::string> OptionsToArgs(
     }
     if (kind && !cli::OptionAppliesTo(key, *kind))
     {
+      if (dropped)
+      {
+        dropped->push_back(key);
+      }
       continue;
     }
     if (value.is_boolean())
@@ -358,7 +362,19 @@ BatchJob LoadBatchJob(const std::string& path)
           BatchTask t;
           t.name = camName + "_s" + Num("%02d", static_cast<int>(s));
           t.dataset = ds;
-          t.args = OptionsToArgs(settings[s], t.setting, path, base, kind);
+          std::vector<std::string> dropped;
+          t.args = OptionsToArgs(settings[s], t.setting, path, base, kind, &dropped);
+          if (c == 0 && !dropped.empty())
+          {
+            // Its frames of this data set may repeat another setting's (a surface takes no tets).
+            std::string list;
+            for (const auto& k : dropped)
+            {
+              list += (list.empty() ? "" : ", ") + k;
+            }
+            job.notes.push_back("setting " + std::to_string(s) + "'s " + list + " do" + (dropped.size() == 1 ? "es" : "") +
+              " not apply to " + art::KindName(dsKind) + "s: left out for " + ds);
+          }
           t.args.insert(t.args.begin(), view.begin(), view.end());
           t.reference = refName;
           t.camera = static_cast<int>(c);
