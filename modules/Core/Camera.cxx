@@ -44,6 +44,15 @@ Camera Camera::FromVTK(vtkCamera* cam, int width, int height)
       c.HalfH = half;
       c.HalfW = half * aspect;
     }
+    // A stereo render shears each eye's projection (vtkPerspectiveTransform::Stereo, half the
+    // eye angle each way, negative for the left eye) about the focal plane: the eye moves
+    // sideways by distance x tan(angle / 2) while the focal plane stays where it was on screen.
+    if (cam->GetStereo() && cam->GetEyeAngle() != 0.0)
+    {
+      const double t = std::tan(vtkMath::RadiansFromDegrees(cam->GetEyeAngle()) * 0.5) * (cam->GetLeftEye() ? -1.0 : 1.0);
+      c.Eye = c.Eye + c.Right * (t * cam->GetDistance());
+      c.Cx -= t / c.HalfW;
+    }
   }
   return c;
 }

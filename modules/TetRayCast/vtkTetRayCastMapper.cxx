@@ -521,12 +521,16 @@ void vtkTetRayCastMapper::WarnUnsupported(vtkCamera* cam)
   {
     what = "model transform matrix";
   }
+  else if (cam->GetStereo() && cam->GetParallelProjection() && cam->GetEyeAngle() != 0.0)
+  {
+    what = "stereo eye shear under parallel projection";
+  }
   if (!what.empty())
   {
     this->Warned |= 8;
     vtkWarningMacro("the camera's " << what << " is not supported: the volume is drawn as without it, "
-      "while opaque geometry follows it (position, focal point, view up, view angle, parallel scale "
-      "and window centre are followed)");
+      "while opaque geometry follows it (position, focal point, view up, view angle, parallel scale, "
+      "window centre and a perspective camera's stereo eyes are followed)");
   }
 }
 

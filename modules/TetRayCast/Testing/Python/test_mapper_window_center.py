@@ -1,13 +1,15 @@
-"""vtkTetRayCastMapper follows the camera's window centre (vtkCamera.SetWindowCenter), as VTK's
-own ray cast mappers do.
+"""vtkTetRayCastMapper follows the camera's window centre (vtkCamera.SetWindowCenter) and each
+eye of a stereo render, as VTK's own ray cast mappers do.
 
 The window centre was ignored: the volume stayed in the middle of the viewport while opaque
 geometry moved, and vtkRenderLargeImage (the tiling behind VTK's and ParaView's screenshots larger
 than the window), which renders each tile through a shifted window centre, repeated the whole
 volume in every tile. Here a box seen in perspective from off its axes must fill the same pixels as
 the same box drawn as opaque geometry with a shifted centre (perspective and parallel), and a
-large image at magnification 2 must match one render at twice the size. Needs a display (skips
-with exit 77).
+large image at magnification 2 must match one render at twice the size. In a stereo window
+(left and right eye) the volume drew the same picture for both eyes, with no depth, while opaque
+geometry was drawn from each eye (VTK shears each eye's projection). Needs a display (skips with
+exit 77).
 """
 from mapper_scene import box_tets, constant_property, grab, offscreen_scene, require_display
 
@@ -24,7 +26,7 @@ import adaptivert
 box = box_tets()
 
 
-def scene(width, height, opaque=False, parallel=False, centre=(0.0, 0.0)):
+def scene(width, height, opaque=False, parallel=False, centre=(0.0, 0.0), stereo=None):
     mapper = adaptivert.vtkTetRayCastMapper()
     mapper.AutoAdjustSampleDistancesOff()
     mapper.SetInputData(box)
@@ -47,6 +49,11 @@ def scene(width, height, opaque=False, parallel=False, centre=(0.0, 0.0)):
     ren.ResetCamera()
     cam.SetWindowCenter(*centre)
     ren.ResetCameraClippingRange()
+    if stereo is not None:
+        win.StereoCapableWindowOn()
+        win.SetStereoType(stereo)
+        win.StereoRenderOn()
+        cam.SetEyeAngle(40)
     return ren, win
 
 
@@ -68,6 +75,23 @@ for parallel in (False, True):
               f"({int(truth.sum())} covered)")
         # Only the silhouette's edge may differ (rays through pixel centres against rasterisation).
         assert wrong < 0.05 * truth.sum(), (parallel, centre, wrong)
+
+from vtkmodules.vtkRenderingCore import VTK_STEREO_LEFT, VTK_STEREO_RIGHT
+
+eyes = {}
+for name, stereo in (("left", VTK_STEREO_LEFT), ("right", VTK_STEREO_RIGHT)):
+    ren, win = scene(W, H, stereo=stereo)
+    win.Render()
+    volume = covered(grab(win))
+    ren, win = scene(W, H, opaque=True, stereo=stereo)
+    win.Render()
+    truth = covered(grab(win))
+    eyes[name] = truth
+    wrong = int((volume != truth).sum())
+    print(f"stereo, {name} eye: {wrong} pixels differ from the opaque box ({int(truth.sum())} covered)")
+    assert wrong < 0.05 * truth.sum(), (name, wrong)
+# The eyes see differently (else the check above could not tell a volume that ignores them).
+assert (eyes["left"] != eyes["right"]).sum() > 0.1 * eyes["left"].sum()
 
 ren, win = scene(W, H)
 win.Render()
