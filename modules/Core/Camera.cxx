@@ -44,15 +44,28 @@ Camera Camera::FromVTK(vtkCamera* cam, int width, int height)
       c.HalfH = half;
       c.HalfW = half * aspect;
     }
-    // A stereo render shears each eye's projection (vtkPerspectiveTransform::Stereo, half the
-    // eye angle each way, negative for the left eye) about the focal plane: the eye moves
-    // sideways by distance x tan(angle / 2) while the focal plane stays where it was on screen.
+    // VTK shears a perspective projection about a plane at distance zp (vtkPerspectiveTransform::
+    // Shear: x' = x - dxdz (z + zp) in eye coordinates) for each eye of a stereo render (half the
+    // eye angle, negative for the left eye, about the focal plane) and for SetViewShear; the two
+    // compose into one shear. Its rays leave an eye moved sideways by (dxdz zp, dydz zp) through
+    // an image window moved by (-dxdz, -dydz), so the plane at zp stays where it was on screen.
+    double kx = 0, ky = 0, ex = 0, ey = 0;
+    auto shear = [&](double dxdz, double dydz, double zp) {
+      kx += dxdz, ky += dydz, ex += dxdz * zp, ey += dydz * zp;
+    };
     if (cam->GetStereo() && cam->GetEyeAngle() != 0.0)
     {
-      const double t = std::tan(vtkMath::RadiansFromDegrees(cam->GetEyeAngle()) * 0.5) * (cam->GetLeftEye() ? -1.0 : 1.0);
-      c.Eye = c.Eye + c.Right * (t * cam->GetDistance());
-      c.Cx -= t / c.HalfW;
+      const double t = std::tan(vtkMath::RadiansFromDegrees(cam->GetEyeAngle()) * 0.5);
+      shear(cam->GetLeftEye() ? -t : t, 0.0, cam->GetDistance());
     }
+    const double* vs = cam->GetViewShear();
+    if (vs[0] != 0.0 || vs[1] != 0.0)
+    {
+      shear(vs[0], vs[1], vs[2] * cam->GetDistance());
+    }
+    c.Eye = c.Eye + c.Right * ex + c.Up * ey;
+    c.Cx -= kx / c.HalfW;
+    c.Cy -= ky / c.HalfH;
   }
   return c;
 }

@@ -505,9 +505,9 @@ void vtkTetRayCastMapper::WarnUnsupported(vtkCamera* cam)
   }
   std::string what;
   const double* shear = cam->GetViewShear();
-  if (shear[0] != 0.0 || shear[1] != 0.0)
+  if ((shear[0] != 0.0 || shear[1] != 0.0) && cam->GetParallelProjection())
   {
-    what = "view shear (SetViewShear)";
+    what = "view shear (SetViewShear) under parallel projection";
   }
   else if (cam->GetUseOffAxisProjection())
   {
@@ -530,7 +530,7 @@ void vtkTetRayCastMapper::WarnUnsupported(vtkCamera* cam)
     this->Warned |= 8;
     vtkWarningMacro("the camera's " << what << " is not supported: the volume is drawn as without it, "
       "while opaque geometry follows it (position, focal point, view up, view angle, parallel scale, "
-      "window centre and a perspective camera's stereo eyes are followed)");
+      "window centre, and a perspective camera's view shear and stereo eyes are followed)");
   }
 }
 

@@ -4,7 +4,7 @@ VTK's own unstructured-grid mappers drop both silently; the image must stay the 
 does not follow them) and a warning must name each, once, however many frames are drawn. An
 unchanged default (gradient opacity 1 everywhere) is no news. An empty input (a threshold that
 keeps nothing) draws nothing without an error each frame; an error that stops every frame is said
-once while it repeats; camera settings the rays ignore (view shear) are named once. Needs a
+once while it repeats; camera settings the rays ignore (a user transform) are named once. Needs a
 display (skips with exit 77).
 """
 from mapper_scene import box_tets, constant_property, messages, offscreen_scene, require_display
@@ -90,9 +90,12 @@ mapper.SetScalarModeToDefault()
 
 # Camera settings the rays do not follow are named once (opaque geometry follows them).
 cam = ren.GetActiveCamera()
-cam.SetViewShear(0.3, 0.0, 1.0)
+from vtkmodules.vtkCommonTransforms import vtkTransform
+stretch = vtkTransform()
+stretch.Scale(1.2, 1.0, 1.0)
+cam.SetUserTransform(stretch)
 got = frames(3)
 print(got[5:])
-assert len(got) == 6 and "view shear" in got[5], got
-cam.SetViewShear(0.0, 0.0, 1.0)
+assert len(got) == 6 and "user transform" in got[5], got
+cam.SetUserTransform(None)
 print("ok")

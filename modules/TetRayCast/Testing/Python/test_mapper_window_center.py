@@ -1,5 +1,5 @@
-"""vtkTetRayCastMapper follows the camera's window centre (vtkCamera.SetWindowCenter) and each
-eye of a stereo render, as VTK's own ray cast mappers do.
+"""vtkTetRayCastMapper follows the camera's window centre (vtkCamera.SetWindowCenter), its view
+shear and each eye of a stereo render, as VTK's own ray cast mappers do.
 
 The window centre was ignored: the volume stayed in the middle of the viewport while opaque
 geometry moved, and vtkRenderLargeImage (the tiling behind VTK's and ParaView's screenshots larger
@@ -26,7 +26,7 @@ import adaptivert
 box = box_tets()
 
 
-def scene(width, height, opaque=False, parallel=False, centre=(0.0, 0.0), stereo=None):
+def scene(width, height, opaque=False, parallel=False, centre=(0.0, 0.0), stereo=None, shear=None):
     mapper = adaptivert.vtkTetRayCastMapper()
     mapper.AutoAdjustSampleDistancesOff()
     mapper.SetInputData(box)
@@ -49,6 +49,8 @@ def scene(width, height, opaque=False, parallel=False, centre=(0.0, 0.0), stereo
     ren.ResetCamera()
     cam.SetWindowCenter(*centre)
     ren.ResetCameraClippingRange()
+    if shear is not None:
+        cam.SetViewShear(*shear)
     if stereo is not None:
         win.StereoCapableWindowOn()
         win.SetStereoType(stereo)
@@ -92,6 +94,19 @@ for name, stereo in (("left", VTK_STEREO_LEFT), ("right", VTK_STEREO_RIGHT)):
     assert wrong < 0.05 * truth.sum(), (name, wrong)
 # The eyes see differently (else the check above could not tell a volume that ignores them).
 assert (eyes["left"] != eyes["right"]).sum() > 0.1 * eyes["left"].sum()
+# A sheared view (the volume stayed unsheared, with a warning), alone and with a stereo eye.
+plain = covered(grab(scene(W, H, opaque=True)[1]))
+for shear, stereo in (((0.3, -0.2, 1.0), None), ((0.2, 0.1, 0.5), VTK_STEREO_RIGHT)):
+    ren, win = scene(W, H, shear=shear, stereo=stereo)
+    win.Render()
+    volume = covered(grab(win))
+    ren, win = scene(W, H, opaque=True, shear=shear, stereo=stereo)
+    win.Render()
+    truth = covered(grab(win))
+    wrong = int((volume != truth).sum())
+    print(f"view shear {shear}, stereo {stereo}: {wrong} pixels differ from the opaque box ({int(truth.sum())} covered)")
+    assert wrong < 0.05 * truth.sum(), (shear, stereo, wrong)
+    assert (truth != plain).sum() > 0.1 * plain.sum()
 
 ren, win = scene(W, H)
 win.Render()
