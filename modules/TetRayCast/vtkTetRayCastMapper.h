@@ -151,8 +151,9 @@ protected:
    */
   void WarnUnsupported(vtkVolumeProperty* p, vtkUnstructuredGrid* grid);
   /**
-   * Warns, once, of camera settings the rays do not follow (view shear, off-axis projection, user
-   * and model transforms): opaque geometry moves with them, the volume does not.
+   * Warns, once, of camera settings the rays do not follow (off-axis projection, user and model
+   * transforms, view shear or stereo under parallel projection): opaque geometry moves with them,
+   * the volume does not. Window centre, view shear and stereo eyes in perspective are followed.
    */
   void WarnUnsupported(vtkCamera* cam);
   /**
