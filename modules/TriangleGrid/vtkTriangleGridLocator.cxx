@@ -185,6 +185,17 @@ void vtkTriangleGridLocator::BuildLocatorInternal()
       return;
     }
     this->Engine = art::MakeAccelerator(store, o);
+    // Queries ask the data set for a cell's type and points (GetCellType, GetCell). A polydata
+    // builds its cell map on the first such call, which is not thread safe: build it here, so
+    // queries from several threads at once (each with its own vtkGenericCell) only read it, as
+    // with vtkStaticCellLocator (whose build asks for every cell's bounds).
+    if (auto* own = vtkPolyData::SafeDownCast(this->DataSet))
+    {
+      if (own->NeedToBuildCells())
+      {
+        own->BuildCells();
+      }
+    }
   }
   catch (const std::exception& e)
   {

@@ -1,7 +1,7 @@
 // vtkTriangleGridLocator's other point and box queries: FindClosestPointWithinRadius (and its
 // inside flag), FindCellsWithinBounds equal to the exact answer (brute force) and inside VTK's bucket
 // answer, FindCell where vtkCellLocator finds a cell within tol; the rebuild rules and bad datasets;
-// a line hit's pcoords on quads and polygons.
+// a line hit's pcoords on quads and polygons; queries from several threads at once.
 #include "LocatorTestUtil.h"
 
 #include <vtkAppendFilter.h>
@@ -16,8 +16,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdio>
 #include <set>
+#include <thread>
 
 using namespace arttest;
 
@@ -455,4 +457,68 @@ TEST(LocatorQueries, AnyDataSetOfSurfaceCells)
   loc->FindClosestPoint(x, cp, id, sub, d2);
   EXPECT_EQ(id, -1);
   EXPECT_EQ(errors, 1);
+}
+
+TEST(LocatorQueries, QueriesFromSeveralThreadsAtOnce)
+{
+  // A polydata as a source hands it over (its cell map not built) and queries from 4 threads at
+  // once, each with its own vtkGenericCell, as vtkTrimmedExtrusionFilter makes them: the queries
+  // asked the polydata for cell types, and the first such call builds the map unguarded, so the
+  // threads built it together (double free, or a crash in vtkPolyData::BuildCells). The build now
+  // makes the map, and the threads' answers are those of one thread.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(120, 120);
+  plane->Update();
+  for (int kind : Kinds)
+  {
+    vtkNew<vtkPolyData> pd;
+    pd->SetPoints(plane->GetOutput()->GetPoints());
+    pd->SetPolys(plane->GetOutput()->GetPolys());
+    ASSERT_TRUE(pd->NeedToBuildCells());
+    auto loc = Ours(pd, kind);
+    EXPECT_FALSE(pd->NeedToBuildCells()) << "the build leaves the polydata's cell map to the first queries";
+    const int nthreads = 4, n = 300;
+    auto ask = [&](int k, int i, vtkGenericCell* cell) {
+      std::mt19937 g(1000 * k + i);
+      std::uniform_real_distribution<double> u(-0.49, 0.49);
+      const double p1[3] = { u(g), u(g), 1 }, p2[3] = { p1[0], p1[1], -1 };
+      double t, x[3], pc[3], cp[3], d2, q[3] = { p1[0], p1[1], 0.3 };
+      int sub, sub2;
+      vtkIdType line = -1, near = -1;
+      loc->IntersectWithLine(p1, p2, 0.0, t, x, pc, sub, line, cell);
+      loc->FindClosestPoint(q, cp, cell, near, sub2, d2);
+      return std::array<vtkIdType, 3>{ line, near, sub };
+    };
+    std::vector<std::array<vtkIdType, 3>> expected;
+    {
+      vtkNew<vtkGenericCell> cell;
+      for (int k = 0; k < nthreads; ++k)
+        for (int i = 0; i < n; ++i)
+          expected.push_back(ask(k, i, cell));
+    }
+    // Again on a fresh polydata, from the threads.
+    vtkNew<vtkPolyData> fresh;
+    fresh->SetPoints(plane->GetOutput()->GetPoints());
+    fresh->SetPolys(plane->GetOutput()->GetPolys());
+    loc->SetDataSet(fresh);
+    loc->BuildLocator();
+    std::atomic<int> ready{ 0 }, differ{ 0 };
+    std::vector<std::thread> threads;
+    for (int k = 0; k < nthreads; ++k)
+    {
+      threads.emplace_back([&, k] {
+        vtkNew<vtkGenericCell> cell;
+        ++ready;
+        while (ready < nthreads)
+        {
+        }
+        for (int i = 0; i < n; ++i)
+          if (ask(k, i, cell) != expected[static_cast<size_t>(k * n + i)])
+            ++differ;
+      });
+    }
+    for (auto& t : threads)
+      t.join();
+    EXPECT_EQ(differ, 0) << "kind " << kind;
+  }
 }
