@@ -187,7 +187,10 @@ void TriangleStore::Build(std::vector<Vec3> points, const std::vector<std::array
 Vec3 TriangleStore::OriginFor(const Box3& b)
 {
   const Vec3 c = b.Center();
-  return std::max(std::fabs(c.x), std::max(std::fabs(c.y), std::fabs(c.z))) > 1e3 * b.Diagonal() ? c : Vec3();
+  // A float keeps 24 bits of |p - origin|: about 6e-8 of it. Taken from the origin, a scene whose
+  // centre lies far beyond its size loses that much of |c|, not of its size (at 1e7 with 1e4 across,
+  // whole units: a 0.3-wide triangle was missed); from the centre, at most half its diagonal.
+  return std::max(std::fabs(c.x), std::max(std::fabs(c.y), std::fabs(c.z))) > b.Diagonal() ? c : Vec3();
 }
 
 TriangleStore TriangleStore::FromPolyData(vtkPolyData* pd, const Vec3& origin)

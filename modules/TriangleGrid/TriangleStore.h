@@ -57,9 +57,10 @@ public:
   /// relative to `origin`; OriginalIndex gives the polydata cell id of each record. Throws
   /// art::Error on null input.
   static TriangleStore FromPolyData(vtkPolyData* pd, const Vec3& origin = Vec3());
-  /// Where to take a scene's coordinates from: its centre when that lies more than 1000 of its
-  /// diagonals from the origin (survey or CAD coordinates, whose triangles the store's floats would
-  /// collapse), else the origin itself (so ordinary scenes keep their exact coordinates).
+  /// Where to take a scene's coordinates from: its centre when that lies more than one diagonal
+  /// from the origin (survey or CAD coordinates, whose triangles the store's floats would round to
+  /// a fraction of |centre|, not of the scene), else the origin itself (so scenes around the origin
+  /// keep their exact coordinates).
   static Vec3 OriginFor(const Box3& bounds);
 
   size_t Size() const { return Records.size(); }

@@ -522,3 +522,54 @@ TEST(LocatorQueries, QueriesFromSeveralThreadsAtOnce)
     EXPECT_EQ(differ, 0) << "kind " << kind;
   }
 }
+
+TEST(LocatorQueries, FarSceneLargerThanAThousandthOfItsDistance)
+{
+  // Survey coordinates: a ground triangle 1e4 across at (1e7, 1e7) with two small roof triangles.
+  // The store took coordinates from the scene's centre only beyond 1000 diagonals, so here it kept
+  // them from the origin, where a float is whole units: the 0.3-wide triangle was missed and the
+  // other hit 0.02 too high. Line hits must be vtkCellLocator's, to float precision of the scene.
+  const double o = 1e7;
+  const double xyz[9][3] = { { 0, 0, 0 }, { 10000, 0, 0 }, { 0, 10000, 0 }, { 5000.1, 5000.1, 10 },
+    { 5000.4, 5000.1, 10 }, { 5000.1, 5000.4, 10 }, { 6000.2, 3000.2, 20.3 }, { 6000.6, 3000.2, 20.3 },
+    { 6000.2, 3000.6, 20.7 } };
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  for (const auto& p : xyz)
+  {
+    pts->InsertNextPoint(o + p[0], o + p[1], p[2]);
+  }
+  vtkNew<vtkCellArray> tris;
+  for (vtkIdType c = 0; c < 3; ++c)
+  {
+    const vtkIdType ids[3] = { 3 * c, 3 * c + 1, 3 * c + 2 };
+    tris->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> pd;
+  pd->SetPoints(pts);
+  pd->SetPolys(tris);
+  vtkNew<vtkCellLocator> ref;
+  ref->SetDataSet(pd);
+  ref->BuildLocator();
+  vtkNew<vtkGenericCell> cell;
+  const double aims[3][2] = { { 5000.2, 5000.2 }, { 6000.3, 3000.3 }, { 1234.56, 2345.67 } };
+  for (int kind : Kinds)
+  {
+    auto loc = Ours(pd, kind);
+    for (int a = 0; a < 3; ++a)
+    {
+      const double p1[3] = { o + aims[a][0], o + aims[a][1], 100 }, p2[3] = { p1[0], p1[1], -100 };
+      double t, x[3], pc[3], rt, rx[3], rpc[3];
+      int sub, rsub;
+      vtkIdType id = -1, rid = -1;
+      ASSERT_EQ(ref->IntersectWithLine(p1, p2, 0.0, rt, rx, rpc, rsub, rid, cell), 1);
+      ASSERT_EQ(loc->IntersectWithLine(p1, p2, 0.0, t, x, pc, sub, id, cell), 1) << "kind " << kind << " aim " << a;
+      EXPECT_EQ(id, rid) << "kind " << kind << " aim " << a;
+      // The store traces float vertices taken from the scene's centre: within 1e-7 of its diagonal
+      // (1.4e-3 here; the small triangles are 0.3-0.4 across).
+      EXPECT_NEAR(x[2], rx[2], 1.5e-3) << "kind " << kind << " aim " << a;
+      EXPECT_NEAR(pc[0], rpc[0], 1e-2);
+      EXPECT_NEAR(pc[1], rpc[1], 1e-2);
+    }
+  }
+}
