@@ -169,6 +169,12 @@ void vtkTriangleGridLocator::BuildLocatorInternal()
   {
     double b[6];
     pd->GetBounds(b);
+    double largest = 0;
+    for (double v : b)
+    {
+      largest = std::isfinite(v) ? std::max(largest, std::fabs(v)) : largest;
+    }
+    this->OnSurfaceSlack = 1e-12 * largest;
     const art::Vec3 origin = art::TriangleStore::OriginFor(art::Box3::FromBounds(b));
     this->Origin[0] = origin.x, this->Origin[1] = origin.y, this->Origin[2] = origin.z;
     auto store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd, origin));
@@ -410,9 +416,16 @@ vtkIdType vtkTriangleGridLocator::FindCell(
   double cp[3], d2;
   vtkIdType cellId;
   bool inside;
-  // Within tol means d2 <= tol2 (so tol2 = 0 still finds a point lying exactly on the surface).
-  if (!(tol2 >= 0) ||
-    !this->Nearest(x, std::nextafter(tol2, std::numeric_limits<double>::infinity()), cp, cellId, d2, inside))
+  // Within tol means d2 <= tol2, less rounding: a point on the surface (a random point of a
+  // triangle, in double) is left ~1e-17 of its coordinates from it by the closest point's
+  // arithmetic, and tol2 = 0 (FindCell(x)) missed such points where VTK's locators find them.
+  if (!(tol2 >= 0))
+  {
+    return -1;
+  }
+  this->BuildLocator();
+  const double tol = std::sqrt(tol2) + this->OnSurfaceSlack;
+  if (!this->Nearest(x, std::nextafter(tol * tol, std::numeric_limits<double>::infinity()), cp, cellId, d2, inside))
   {
     return -1;
   }

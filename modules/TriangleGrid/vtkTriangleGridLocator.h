@@ -24,7 +24,9 @@
  * - FindCellsWithinBounds: the cells that intersect the closed box (exactly; VTK's own locators
  *   return every cell of the buckets the box touches, a superset of this).
  * - FindCell(x, tol2, cell, pcoords, weights): for a surface, the cell nearest x if it lies within
- *   sqrt(tol2), with the cell's own pcoords and weights at x; -1 otherwise. (VTK 9.1's
+ *   sqrt(tol2) (widened by 1e-12 of the scene's largest coordinate, for rounding, so FindCell(x)
+ *   with its zero tolerance finds a point lying on the surface), with the cell's own pcoords and
+ *   weights at x; -1 otherwise. (VTK 9.1's
  *   vtkCellLocator ignores tol2 on a surface: it answers wherever x lies in a cell's bounding box and
  *   projects inside the cell, however far from it. Where its cell lies within tol, this gives the
  *   same cell or an equally near one.)
@@ -157,6 +159,9 @@ private:
   }
   bool Built = false; // a build was tried (it may have failed: no triangles) since the last free
   double Origin[3] = { 0, 0, 0 }; // the engine's coordinates are taken from here (far scenes)
+  // What rounding leaves of the distance from a point lying on the surface (the closest point is
+  // computed in double): FindCell's tol is widened by this, so tol2 = 0 finds such a point.
+  double OnSurfaceSlack = 0;
 };
 
 #endif
