@@ -217,12 +217,38 @@ TriangleStore TriangleStore::FromPolyData(vtkPolyData* pd, const Vec3& origin)
   for (polys->InitTraversal(); polys->GetNextCell(ids); ++cellId)
   {
     const vtkIdType n = ids->GetNumberOfIds();
-    if (n == 3 || n == 4)
+    if (n == 3)
     {
-      // Triangles and quads: a fan (a quad's two diagonals give the same surface when planar).
-      for (vtkIdType k = 1; k + 1 < n; ++k)
+      tris.push_back({ ids->GetId(0), ids->GetId(1), ids->GetId(2) });
+      original.push_back(cellId);
+    }
+    else if (n == 4)
+    {
+      // Quads: a fan from corner 0 (a planar quad's two diagonals give the same surface), unless
+      // the 4-gon is concave (a VTK_POLYGON of 4 points, as an unstructured grid may hold one):
+      // then only the fan from its reflex corner stays inside it; the one from corner 0 covered
+      // the notch, so lines through the notch hit the cell.
+      Vec3 q[4], normal;
+      for (int k = 0; k < 4; ++k)
       {
-        tris.push_back({ ids->GetId(0), ids->GetId(k), ids->GetId(k + 1) });
+        q[k] = Vec3(pd->GetPoint(ids->GetId(k)));
+      }
+      for (int k = 0; k < 4; ++k)
+      {
+        normal = normal + Cross(q[k], q[(k + 1) % 4]); // Newell's normal
+      }
+      int from = 0;
+      for (int k = 0; k < 4; ++k)
+      {
+        if (Dot(Cross(q[k] - q[(k + 3) % 4], q[(k + 1) % 4] - q[k]), normal) < 0)
+        {
+          from = k; // the reflex corner (a simple 4-gon has at most one)
+          break;
+        }
+      }
+      for (int k = 1; k <= 2; ++k)
+      {
+        tris.push_back({ ids->GetId(from), ids->GetId((from + k) % 4), ids->GetId((from + k + 1) % 4) });
         original.push_back(cellId);
       }
     }

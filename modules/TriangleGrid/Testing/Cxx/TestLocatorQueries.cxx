@@ -629,3 +629,51 @@ TEST(LocatorQueries, FindCellWithZeroToleranceFindsPointsOnTheSurface)
     }
   }
 }
+
+TEST(LocatorQueries, ConcaveFourPointPolygon)
+{
+  // A VTK_POLYGON of 4 points with its reflex corner at index 1 (a dart), in an unstructured grid.
+  // The store cut every 4-gon into a fan from corner 0, whose diagonal 0-2 runs outside a dart: a
+  // line through the notch hit the cell and a point above the notch was 'on' it, where
+  // vtkCellLocator (vtkPolygon's own tests) misses and finds the dart's edge.
+  vtkNew<vtkPoints> pts;
+  const double xyz[4][3] = { { 0, 0, 0 }, { 1, 0.8, 0 }, { 2, 0, 0 }, { 1, 2, 0 } };
+  for (const auto& p : xyz)
+  {
+    pts->InsertNextPoint(p);
+  }
+  for (int rotate = 0; rotate < 4; ++rotate)
+  {
+    vtkNew<vtkUnstructuredGrid> ug;
+    ug->SetPoints(pts);
+    vtkIdType ids[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      ids[k] = (k + rotate) % 4; // the reflex corner at every index in turn
+    }
+    ug->InsertNextCell(VTK_POLYGON, 4, ids);
+    vtkNew<vtkCellLocator> ref;
+    ref->SetDataSet(ug);
+    ref->BuildLocator();
+    vtkNew<vtkGenericCell> cell;
+    for (int kind : Kinds)
+    {
+      vtkNew<vtkTriangleGridLocator> loc;
+      loc->SetAcceleratorType(kind);
+      loc->SetDataSet(ug);
+      loc->BuildLocator();
+      double t, x[3], pc[3];
+      int sub;
+      vtkIdType id;
+      const double notch[2][3] = { { 1, 0.3, 1 }, { 1, 0.3, -1 } }, body[2][3] = { { 1, 1.2, 1 }, { 1, 1.2, -1 } };
+      EXPECT_EQ(loc->IntersectWithLine(notch[0], notch[1], 0.0, t, x, pc, sub, id, cell), 0) << "rotation " << rotate;
+      EXPECT_EQ(ref->IntersectWithLine(notch[0], notch[1], 0.0, t, x, pc, sub, id, cell), 0);
+      EXPECT_EQ(loc->IntersectWithLine(body[0], body[1], 0.0, t, x, pc, sub, id, cell), 1) << "rotation " << rotate;
+      double q[3] = { 1, 0.3, 0.2 }, cp[3], rcp[3], d2, rd2;
+      vtkIdType c, rc;
+      loc->FindClosestPoint(q, cp, cell, c, sub, d2);
+      ref->FindClosestPoint(q, rcp, cell, rc, sub, rd2);
+      EXPECT_NEAR(d2, rd2, 1e-12) << "rotation " << rotate << " kind " << kind;
+    }
+  }
+}
