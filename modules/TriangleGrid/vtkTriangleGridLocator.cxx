@@ -112,7 +112,10 @@ void vtkTriangleGridLocator::BuildLocator()
   {
     return;
   }
-  if (this->Engine && this->UseExistingSearchStructure)
+  // Kept only over a data set with as many cells as it was built over: one with fewer had its
+  // cell ids past its end handed to GetCell (vtkStaticCellLocator rebuilds there too).
+  if (this->Engine && this->UseExistingSearchStructure && this->DataSet &&
+    this->DataSet->GetNumberOfCells() == this->BuiltCells)
   {
     this->BuildTime.Modified();
     return;
@@ -131,6 +134,7 @@ void vtkTriangleGridLocator::BuildLocatorInternal()
   this->Built = true;
   this->BuildTime.Modified();
   this->OriginalIds.clear();
+  this->BuiltCells = this->DataSet ? this->DataSet->GetNumberOfCells() : -1;
   if (!this->DataSet)
   {
     vtkErrorMacro(<< "no dataset to locate in");

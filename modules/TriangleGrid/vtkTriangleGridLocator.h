@@ -158,6 +158,9 @@ private:
     return this->OriginalIds.empty() ? static_cast<vtkIdType>(id) : this->OriginalIds[static_cast<size_t>(id)];
   }
   bool Built = false; // a build was tried (it may have failed: no triangles) since the last free
+  // The cell count the structure was built over: UseExistingSearchStructure keeps it only for a
+  // data set with as many cells, whose ids it names.
+  vtkIdType BuiltCells = -1;
   double Origin[3] = { 0, 0, 0 }; // the engine's coordinates are taken from here (far scenes)
   // What rounding leaves of the distance from a point lying on the surface (the closest point is
   // computed in double): FindCell's tol is widened by this, so tol2 = 0 finds such a point.

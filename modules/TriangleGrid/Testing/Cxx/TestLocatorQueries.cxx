@@ -12,6 +12,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkMath.h>
 #include <vtkPoints.h>
+#include <vtkSphereSource.h>
 #include <vtkStaticCellLocator.h>
 
 #include <gtest/gtest.h>
@@ -208,6 +209,34 @@ TEST(LocatorQueries, FindCell)
   ASSERT_TRUE(pd);
   CheckFindCell(pd, 1500);
   CheckFindCell(QuadPlane(), 600);
+}
+
+// UseExistingSearchStructure keeps a structure only over a data set with as many cells: pointed
+// at a coarser one, it named cells up to 464 of 24 and handed them to GetCell (probe13).
+TEST(LocatorQueries, ExistingStructureIsNotKeptOverFewerCells)
+{
+  vtkNew<vtkSphereSource> fine, coarse;
+  fine->SetThetaResolution(30);
+  fine->SetPhiResolution(30);
+  coarse->SetThetaResolution(6);
+  coarse->SetPhiResolution(4);
+  fine->Update();
+  coarse->Update();
+  vtkNew<vtkTriangleGridLocator> loc;
+  loc->SetDataSet(fine->GetOutput());
+  loc->BuildLocator();
+  loc->UseExistingSearchStructureOn();
+  loc->SetDataSet(coarse->GetOutput());
+  loc->BuildLocator();
+  const vtkIdType n = coarse->GetOutput()->GetNumberOfCells();
+  for (double z : { 0.3, -0.3 })
+  {
+    double x[3] = { 0.05, 0.02, z }, cp[3], d2;
+    vtkIdType id;
+    int sub;
+    loc->FindClosestPoint(x, cp, id, sub, d2);
+    EXPECT_TRUE(id >= 0 && id < n) << id << " of " << n;
+  }
 }
 
 TEST(LocatorQueries, RebuildsWhenTheDataSetChanges)
