@@ -230,9 +230,24 @@ public:
     return true;
   }
 
-  void InBox(const Box3& box, std::vector<long long>& out, Counters& c) const override
+  void InBox(const Box3& query, std::vector<long long>& out, Counters& c) const override
   {
     out.clear();
+    // An infinite side reaches past every triangle: the scene's bounds (padded) stand in for it,
+    // as VTK's locators return every cell there (it found none). NaN finds nothing.
+    Box3 box = query;
+    const Box3 all = S->Bounds();
+    for (int a = 0; a < 3; ++a)
+    {
+      if (std::isinf(box.lo[a]) && box.lo[a] < 0)
+      {
+        box.lo[a] = std::min(all.lo[a], box.hi[a]) - 1.0;
+      }
+      if (std::isinf(box.hi[a]) && box.hi[a] > 0)
+      {
+        box.hi[a] = std::max(all.hi[a], box.lo[a]) + 1.0;
+      }
+    }
     if (box.Empty() || !IsFinite(box.lo) || !IsFinite(box.hi))
     {
       return;

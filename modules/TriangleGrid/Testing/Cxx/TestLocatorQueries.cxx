@@ -8,6 +8,7 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
 #include <vtkCellLocator.h>
+#include <vtkIdList.h>
 #include <vtkImageData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkMath.h>
@@ -18,6 +19,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <set>
 #include <thread>
@@ -201,6 +204,37 @@ TEST(LocatorQueries, CellsWithinBounds)
   ASSERT_TRUE(pd);
   CheckBoxes(pd, 400);
   CheckBoxes(StripSphere(), 200);
+}
+
+// An infinite side reaches every located cell, as with VTK's locators (none came back); NaN none.
+TEST(LocatorQueries, InfiniteBoxesHoldEveryCell)
+{
+  auto pd = LoadIf(std::string(ART_SOURCE_DIR) + "/data/am_underworks.ply");
+  ASSERT_TRUE(pd);
+  const double inf = std::numeric_limits<double>::infinity();
+  double b[6];
+  pd->GetBounds(b);
+  for (int kind : Kinds)
+  {
+    auto loc = Ours(pd, kind);
+    vtkNew<vtkIdList> ids;
+    // Every located cell: as many as a finite box around the scene holds (its 3 zero-area
+    // triangles are not located).
+    double around[6] = { b[0] - 1, b[1] + 1, b[2] - 1, b[3] + 1, b[4] - 1, b[5] + 1 };
+    loc->FindCellsWithinBounds(around, ids);
+    const vtkIdType located = ids->GetNumberOfIds();
+    EXPECT_GE(located, pd->GetNumberOfCells() - 3);
+    double all[6] = { -inf, inf, -inf, inf, -inf, inf };
+    loc->FindCellsWithinBounds(all, ids);
+    EXPECT_EQ(ids->GetNumberOfIds(), located) << "kind " << kind;
+    double upper[6] = { 0.5 * (b[0] + b[1]), inf, -inf, inf, -inf, inf }; // one half: some, not all
+    loc->FindCellsWithinBounds(upper, ids);
+    EXPECT_GT(ids->GetNumberOfIds(), 0) << "kind " << kind;
+    EXPECT_LT(ids->GetNumberOfIds(), pd->GetNumberOfCells()) << "kind " << kind;
+    double nan[6] = { std::nan(""), 1, -1, 1, -1, 1 };
+    loc->FindCellsWithinBounds(nan, ids);
+    EXPECT_EQ(ids->GetNumberOfIds(), 0) << "kind " << kind;
+  }
 }
 
 TEST(LocatorQueries, FindCell)
