@@ -7,7 +7,9 @@
  * Polygons and strips are triangulated internally; cell ids reported are the polydata's own.
  * The ray/triangle test is watertight (Woop, Benthin & Wald 2013), so the tolerance argument of
  * the VTK interface is not needed and is ignored: a segment through a shared edge hits exactly
- * one of its triangles.
+ * one of its triangles. A segment lying in a triangle's plane does not hit it (VTK's locators
+ * report where it enters), and a non-planar quad is split along its 0-2 diagonal (VTK's choice
+ * of diagonal differs between versions), so hits on a bent quad may differ from VTK's.
  *
  * - IntersectWithLine(p1, p2, tol, t, x, pcoords, subId[, cellId[, cell]]): the hit nearest p1.
  *   pcoords and subId are the hit cell's own at x (for a triangle, the barycentric weights of its
@@ -36,7 +38,7 @@
  * vtkCellLocator (an unstructured grid of triangles and quads, a one-slice image's pixels; a
  * quadratic cell by its corners); one with 3-D cells is an error. BuildLocator rebuilds when the locator or its dataset was
  * modified since the last build, unless UseExistingSearchStructure is on and a structure exists
- * (then the structure, and the geometry it copied, is kept).
+ * over as many cells as the dataset has (then the structure, and the geometry it copied, is kept).
  */
 #ifndef vtkTriangleGridLocator_h
 #define vtkTriangleGridLocator_h
