@@ -63,15 +63,21 @@ def covered(img):
     return img.max(axis=2) > 8
 
 
+def covered_in(**options):
+    """The covered pixels of one render; its window is closed at once (each holds an X
+    connection, and a dozen left open beside parallel tests lost the server's)."""
+    ren, win = scene(W, H, **options)
+    win.Render()
+    mask = covered(grab(win))
+    win.Finalize()
+    return mask
+
+
 W, H = 160, 120
 for parallel in (False, True):
     for centre in ((0.5, 0.0), (-0.3, 0.4)):
-        ren, win = scene(W, H, parallel=parallel, centre=centre)
-        win.Render()
-        volume = covered(grab(win))
-        ren, win = scene(W, H, opaque=True, parallel=parallel, centre=centre)
-        win.Render()
-        truth = covered(grab(win))
+        volume = covered_in(parallel=parallel, centre=centre)
+        truth = covered_in(opaque=True, parallel=parallel, centre=centre)
         wrong = int((volume != truth).sum())
         print(f"parallel {parallel}, window centre {centre}: {wrong} pixels differ from the opaque box "
               f"({int(truth.sum())} covered)")
@@ -82,12 +88,8 @@ from vtkmodules.vtkRenderingCore import VTK_STEREO_LEFT, VTK_STEREO_RIGHT
 
 eyes = {}
 for name, stereo in (("left", VTK_STEREO_LEFT), ("right", VTK_STEREO_RIGHT)):
-    ren, win = scene(W, H, stereo=stereo)
-    win.Render()
-    volume = covered(grab(win))
-    ren, win = scene(W, H, opaque=True, stereo=stereo)
-    win.Render()
-    truth = covered(grab(win))
+    volume = covered_in(stereo=stereo)
+    truth = covered_in(opaque=True, stereo=stereo)
     eyes[name] = truth
     wrong = int((volume != truth).sum())
     print(f"stereo, {name} eye: {wrong} pixels differ from the opaque box ({int(truth.sum())} covered)")
@@ -95,14 +97,10 @@ for name, stereo in (("left", VTK_STEREO_LEFT), ("right", VTK_STEREO_RIGHT)):
 # The eyes see differently (else the check above could not tell a volume that ignores them).
 assert (eyes["left"] != eyes["right"]).sum() > 0.1 * eyes["left"].sum()
 # A sheared view (the volume stayed unsheared, with a warning), alone and with a stereo eye.
-plain = covered(grab(scene(W, H, opaque=True)[1]))
+plain = covered_in(opaque=True)
 for shear, stereo in (((0.3, -0.2, 1.0), None), ((0.2, 0.1, 0.5), VTK_STEREO_RIGHT)):
-    ren, win = scene(W, H, shear=shear, stereo=stereo)
-    win.Render()
-    volume = covered(grab(win))
-    ren, win = scene(W, H, opaque=True, shear=shear, stereo=stereo)
-    win.Render()
-    truth = covered(grab(win))
+    volume = covered_in(shear=shear, stereo=stereo)
+    truth = covered_in(opaque=True, shear=shear, stereo=stereo)
     wrong = int((volume != truth).sum())
     print(f"view shear {shear}, stereo {stereo}: {wrong} pixels differ from the opaque box ({int(truth.sum())} covered)")
     assert wrong < 0.05 * truth.sum(), (shear, stereo, wrong)
