@@ -5,6 +5,9 @@
 #include "ViewerApp.h"
 #include "ViewerOptions.h"
 
+#include <vtkLogger.h>
+#include <vtkOutputWindow.h>
+
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -27,6 +30,11 @@ int main(int argc, char** argv)
     std::printf("%s", view::UsageText().c_str());
     return 0;
   }
+  // VTK's readers and parsers report through its output window and logger (a coloured
+  // "ERR| vtkXMLDataParser (0x...)" line before ours for a damaged .vti/.vtu/.vtp); the viewer
+  // reports in one line itself, as adaptivert does, and takes the mapper's messages by observer.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   try
   {
     if (!opt.Screenshot.empty())
