@@ -2,6 +2,7 @@
 #include "ViewerAppInternals.h"
 
 #include "Camera.h"
+#include "DataLoader.h"
 #include "DisplayCheck.h"
 #include "Error.h"
 
@@ -28,13 +29,22 @@ ViewerApp::ViewerApp(ViewerOptions options)
   : Impl(new Internals)
 {
   Impl->Opt = std::move(options);
-  Impl->Scene = LoadScene(Impl->Opt.File, Impl->Opt.TransferFunction, Impl->Opt.Array);
-  if (Impl->Opt.TetsGiven && !Impl->Scene.Image)
+  const ViewerOptions& o = Impl->Opt;
+  const art::DataKind kind = art::KindOf(o.File); // before loading: a large scene need not be read to say this
+  if (o.TetsGiven && kind != art::DataKind::Volume)
   {
     // A mesh or a triangle scene is shown as it is: its --tets levels were ignored without a word.
-    throw UsageError("--tets sets the reduction levels of a volume; " + Impl->Opt.File + " is a " +
-      (Impl->Scene.Surface ? "triangle scene" : "tet mesh") + ", shown as it is");
+    throw UsageError("--tets sets the reduction levels of a volume; " + o.File + " is a " +
+      (kind == art::DataKind::Surface ? "triangle scene" : "tet mesh") + ", shown as it is");
   }
+  if (kind == art::DataKind::Surface && (!o.Array.empty() || o.TfGiven))
+  {
+    // A triangle scene is traced in its own colours: --array (even a name it lacks) and --tf were
+    // ignored without a word; adaptivert render refuses them on a surface.
+    throw UsageError(std::string(o.Array.empty() ? "--tf" : "--array") + " applies to volumes and meshes; " + o.File +
+      " is a triangle scene, shown in its own colours");
+  }
+  Impl->Scene = LoadScene(o.File, o.TransferFunction, o.Array);
   if (!Impl->Scene.Surface && !Impl->Scene.Image && !Impl->Scene.Note.empty())
   {
     Impl->Say(Impl->Scene.Note); // a mesh's: cells tetrahedralised or left out, points dropped or merged

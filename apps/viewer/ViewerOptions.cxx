@@ -171,6 +171,7 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
         throw UsageError("--tf: unknown preset '" + value + "' (known: " + all + ", or a file)");
       }
       o.TransferFunction = value;
+      o.TfGiven = true;
     }
     else if (a == "--script")
     {

@@ -24,6 +24,7 @@ struct ViewerOptions
   bool TetsGiven = false;         ///< --tets was given (it applies to volumes only)
   std::string Array;             ///< point (or cell) array to show (default: the active scalars)
   std::string TransferFunction = "auto";
+  bool TfGiven = false;           ///< --tf was given (it applies to volumes and meshes only)
   std::string Script;            ///< file of scripted actions (tests, demos)
   std::string Screenshot;        ///< take one after the script (or the reduction) and exit
   bool Help = false;

@@ -62,6 +62,8 @@ TEST(ViewerOptions, DefaultsAndValues)
   EXPECT_EQ(o.Tets, (std::vector<long long>{ 1000, 5000 })); // sorted, repeats dropped
   EXPECT_EQ(o.Screenshot, "o.png");
   EXPECT_EQ(o.TransferFunction, "ct-bone");
+  EXPECT_TRUE(o.TfGiven); // --tf on a triangle scene is refused, as adaptivert render does
+  EXPECT_FALSE(d.TfGiven);
   EXPECT_TRUE(Parse({ "--help" }).Help);
 }
 
