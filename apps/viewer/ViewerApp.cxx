@@ -132,6 +132,14 @@ int ViewerApp::Run()
 #ifdef ART_HAVE_Reduction
   I.Worker.reset(); // cancels a reduction still running
 #endif
+  if (!I.Opt.Screenshot.empty() && !I.ScreenshotWritten && I.ExitCode == 0)
+  {
+    // Quit (`q`, a script's `key q`, the window closed) before the --screenshot was taken: it
+    // exited 0 without the file and without a word.
+    std::fprintf(stderr, "adaptivert-view: %s: not written: quit before the --screenshot was taken\n",
+      I.Opt.Screenshot.c_str());
+    return 1;
+  }
   return I.ExitCode;
 }
 

@@ -79,6 +79,7 @@ struct ViewerApp::Internals
   bool ClipPlaced = false;
   std::chrono::steady_clock::time_point T0 = std::chrono::steady_clock::now();
   bool Dirty = false, Quitting = false;
+  bool ScreenshotWritten = false; ///< the --screenshot file was written (by the end of the script or `s`)
   int ExitCode = 0;
 
   double Now() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - T0).count(); }

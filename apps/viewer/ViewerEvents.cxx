@@ -78,6 +78,7 @@ bool ViewerApp::Internals::Screenshot(const std::string& path)
     grab->ShouldRerenderOn();
     grab->Update();
     art::WriteImage(art::FromVTKImage(grab->GetOutput()), path); // atomic: temp file + rename
+    ScreenshotWritten = ScreenshotWritten || path == Opt.Screenshot;
     return true;
   }
   catch (const art::Error& e)
@@ -193,6 +194,13 @@ void ViewerApp::Internals::StepScript()
         break;
       case ScriptAction::Kind::Key:
         OnKey(a.Text[0]);
+        if (Quitting)
+        {
+          // `key q` ends the script: the actions after it ran on a window that was closing
+          // (their screenshots written after the quit).
+          ++ScriptPos;
+          return;
+        }
         break;
       case ScriptAction::Kind::Azimuth:
         cam->Azimuth(a.Value);
