@@ -1,10 +1,12 @@
 #include "ViewerApp.h"
 #include "ViewerAppInternals.h"
 
+#include "AtomicFile.h"
 #include "Camera.h"
 #include "DataLoader.h"
 #include "DisplayCheck.h"
 #include "Error.h"
+#include "ImageIO.h"
 
 #ifdef ART_HAVE_Reduction
 #include "ReducerVTK.h"
@@ -71,6 +73,21 @@ ViewerApp::ViewerApp(ViewerOptions options)
   if (!Impl->Opt.Script.empty())
   {
     Impl->Script = ReadScript(Impl->Opt.Script);
+    for (const ScriptAction& a : Impl->Script)
+    {
+      // Said now, not when the script gets there (after the whole reduction): an image type
+      // that cannot be written, a missing or read-only folder.
+      if (a.What == ScriptAction::Kind::Screenshot)
+      {
+        if (!art::IsImageExtension(a.Text))
+        {
+          throw art::Error("line " + std::to_string(a.Line) + ": screenshot '" + a.Text +
+              "': unknown image type (use .png, .exr or .tif)",
+            Impl->Opt.Script);
+        }
+        art::AtomicFile probe(a.Text); // its temporary file is removed as it goes
+      }
+    }
   }
   const double lo = Impl->Scene.Range[0], hi = Impl->Scene.Range[1];
   Impl->State.IsoStep = std::max((hi - lo) / 50.0, 1e-12);

@@ -3,6 +3,7 @@
 #include "Error.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -10,6 +11,11 @@ namespace view
 {
 std::vector<ScriptAction> ReadScript(const std::string& path)
 {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+  {
+    throw art::Error("is a directory, expected a script file", path); // it read as an empty script
+  }
   std::ifstream in(path);
   if (!in)
   {

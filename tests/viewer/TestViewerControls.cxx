@@ -225,6 +225,8 @@ TEST(ViewerScript, MalformedLinesNameFileAndLine)
     }
   }
   EXPECT_THROW(ReadScript(std::string(ART_TEST_OUTPUT) + "/no-such.script"), art::Error);
+  // A folder opened as an empty script: nothing ran and nothing was said (probe14).
+  EXPECT_THROW(ReadScript(ART_TEST_OUTPUT), art::Error);
 }
 
 namespace
