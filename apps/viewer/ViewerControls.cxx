@@ -87,6 +87,11 @@ KeyResult ApplyKey(ViewerState& s, char key, int levels)
   }
 }
 
+std::string ReducedText(int levels)
+{
+  return "reduced: " + std::to_string(levels) + (levels == 1 ? " level" : " levels") + " from one run";
+}
+
 std::string HelpText(const ViewerState& s, bool volume)
 {
   std::ostringstream os;

@@ -42,6 +42,9 @@ enum class KeyResult
 /// Applies one key to the state; `levels` is how many tet levels are ready.
 KeyResult ApplyKey(ViewerState& s, char key, int levels);
 
+/// The progress line once the reduction is done: "reduced: 3 levels from one run" ("1 level").
+std::string ReducedText(int levels);
+
 /// The key help (shown when s.Help), one line per control with its current value.
 std::string HelpText(const ViewerState& s, bool volume);
 } // namespace view

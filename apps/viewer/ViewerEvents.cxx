@@ -130,8 +130,7 @@ void ViewerApp::Internals::PollReduction()
   if (st.Finished)
   {
     ReductionFinished = true;
-    bar = st.Error.empty() ? "reduced: " + std::to_string(Scene.Levels.size()) + " levels from one run"
-                           : "reduction failed: " + st.Error;
+    bar = st.Error.empty() ? ReducedText(static_cast<int>(Scene.Levels.size())) : "reduction failed: " + st.Error;
     char note[96];
     std::snprintf(note, sizeof note, ", %zu level%s reduced in %.2f s", Scene.Levels.size(),
       Scene.Levels.size() == 1 ? "" : "s", st.Seconds);

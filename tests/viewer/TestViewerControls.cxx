@@ -162,6 +162,13 @@ TEST(ViewerControls, SettingsKeys)
   EXPECT_EQ(ApplyKey(s, 'w', 1), KeyResult::Ignored); // VTK's wireframe key does nothing here
 }
 
+// The progress line said "reduced: 1 levels from one run" for one --tets level (probe14).
+TEST(ViewerControls, ReducedTextCountsLevels)
+{
+  EXPECT_EQ(ReducedText(1), "reduced: 1 level from one run");
+  EXPECT_EQ(ReducedText(3), "reduced: 3 levels from one run");
+}
+
 TEST(ViewerScript, ReadsEveryAction)
 {
   const std::string path = WriteTemp("viewer-all.script",
