@@ -58,7 +58,9 @@ void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam)
 {
   art::Camera::DefaultView(cam, bounds);
   cam->SetParallelProjection(o.Flag("parallel"));
-  art::Camera::Frame(cam, bounds, o.GetDouble("azimuth"), o.GetDouble("elevation"), Zoom(o));
+  const View view = ViewFromOptions(o);
+  art::Camera::Frame(cam, bounds, o.GetDouble("azimuth"), o.GetDouble("elevation"), Zoom(o),
+    double(view.width) / double(view.height));
 }
 
 // The tet renderer's options that reduce a volume before casting (or cast its voxels): a tet mesh

@@ -266,7 +266,8 @@ void ViewerApp::Internals::ResetCamera()
 {
   vtkCamera* cam = Ren->GetActiveCamera();
   art::Camera::DefaultView(cam, Scene.Bounds); // the CLI's, flat data face on
-  art::Camera::Frame(cam, Scene.Bounds);
+  const int* size = Window->GetSize();
+  art::Camera::Frame(cam, Scene.Bounds, 0.0, 0.0, 1.0, size[1] > 0 ? double(size[0]) / double(size[1]) : 1.0);
   double b[6] = { Scene.Bounds.lo.x, Scene.Bounds.hi.x, Scene.Bounds.lo.y, Scene.Bounds.hi.y, Scene.Bounds.lo.z,
     Scene.Bounds.hi.z };
   Ren->ResetCameraClippingRange(b);

@@ -88,7 +88,7 @@ void Camera::DefaultView(vtkCamera* cam, const Box3& bounds)
   }
 }
 
-void Camera::Frame(vtkCamera* cam, const Box3& b, double azimuth, double elevation, double zoom)
+void Camera::Frame(vtkCamera* cam, const Box3& b, double azimuth, double elevation, double zoom, double aspect)
 {
   // A non-finite angle turns every ray into NaN: an image of nothing, or a crash in a caster.
   if (!std::isfinite(azimuth) || !std::isfinite(elevation) || !(zoom > 0) || !std::isfinite(zoom))
@@ -98,12 +98,16 @@ void Camera::Frame(vtkCamera* cam, const Box3& b, double azimuth, double elevati
   const Vec3 centre = b.Center();
   const double radius = std::max(0.5 * b.Diagonal(), 1e-12);
   const Vec3 dir = Normalize(Vec3(cam->GetDirectionOfProjection()));
-  const double halfAngle = vtkMath::RadiansFromDegrees(cam->GetViewAngle()) * 0.5;
-  const double dist = radius / std::sin(halfAngle);
+  // The narrower of the two half angles must hold the bounding sphere.
+  const double half = vtkMath::RadiansFromDegrees(cam->GetViewAngle()) * 0.5;
+  const double a = aspect > 0 && std::isfinite(aspect) ? aspect : 1.0;
+  const double narrow = cam->GetUseHorizontalViewAngle() ? (a > 1 ? std::atan(std::tan(half) / a) : half)
+                                                         : (a < 1 ? std::atan(std::tan(half) * a) : half);
+  const double dist = radius / std::sin(narrow);
   const Vec3 eye = centre - dir * dist;
   cam->SetFocalPoint(centre.x, centre.y, centre.z);
   cam->SetPosition(eye.x, eye.y, eye.z);
-  cam->SetParallelScale(radius);
+  cam->SetParallelScale(a < 1 ? radius / a : radius); // the scale is half the height
   cam->Azimuth(azimuth);
   cam->Elevation(elevation);
   cam->OrthogonalizeViewUp();

@@ -23,8 +23,10 @@ public:
 
   /// Points `cam` at `bounds` from the given direction the way vtkRenderer::ResetCamera does,
   /// then applies azimuth and elevation (degrees) about the focal point and a zoom factor.
+  /// `aspect` (image width / height) below 1 fits the narrower horizontal angle instead, so a
+  /// portrait image keeps the data's sides (the vertical angle alone cut them off).
   static void Frame(vtkCamera* cam, const Box3& bounds, double azimuth = 0.0,
-    double elevation = 0.0, double zoom = 1.0);
+    double elevation = 0.0, double zoom = 1.0, double aspect = 1.0);
   /// The default view direction of the CLI and the viewer, before Frame: from the front (-y), z
   /// up; flat data (thinner than 1/20 of its width in z, or in x) face on: from above with y up
   /// (ParaView's default view), or from the side. Edge on, a slab drew as a line or nothing.

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cmath>
 
 using art::Vec3;
@@ -69,6 +71,38 @@ TEST(Camera, FrameShowsTheWholeBox)
     const Vec3 c((i & 1) ? 5 : -1, (i & 2) ? 4 : -2, (i & 4) ? 3 : -3);
     const Vec3 d = Normalize(c - cam.Position());
     EXPECT_LT(std::acos(Dot(d, cam.Forward())), half + 1e-9);
+  }
+}
+
+// A portrait image fits the narrower horizontal angle: framed by the vertical one alone, the box's
+// sides fell outside a 40 x 100 image (probe14: the CT head cut off in a tall viewer window).
+// Landscape and square images are framed as before. Checked by projecting every box corner.
+TEST(Camera, FrameFitsPortraitImages)
+{
+  const art::Box3 box({ -1, -2, -3 }, { 5, 4, 3 });
+  for (bool parallel : { false, true })
+  {
+    for (const auto& size : { std::array<int, 2>{ 40, 100 }, std::array<int, 2>{ 100, 100 }, std::array<int, 2>{ 250, 100 } })
+    {
+      vtkNew<vtkCamera> vc;
+      vc->SetParallelProjection(parallel);
+      art::Camera::Frame(vc, box, 30, 20, 1.0, double(size[0]) / size[1]);
+      const auto cam = art::Camera::FromVTK(vc, size[0], size[1]);
+      // The pixel a corner falls on, from the rays through the image's corners and centre.
+      const art::Ray c0 = cam.Generate(0.5 * size[0] - 0.5, 0.5 * size[1] - 0.5);
+      const art::Ray cx = cam.Generate(size[0] - 0.5, 0.5 * size[1] - 0.5);
+      const art::Ray cy = cam.Generate(0.5 * size[0] - 0.5, -0.5);
+      auto plane = [&](const art::Ray& r) { return parallel ? r.org : r.org + r.dir / Dot(r.dir, cam.Forward()); };
+      const Vec3 o = plane(c0), ex = plane(cx) - o, ey = plane(cy) - o;
+      for (int i = 0; i < 8; ++i)
+      {
+        const Vec3 p((i & 1) ? 5 : -1, (i & 2) ? 4 : -2, (i & 4) ? 3 : -3);
+        const Vec3 q = parallel ? p : cam.Position() + (p - cam.Position()) / Dot(p - cam.Position(), cam.Forward());
+        const double u = Dot(q - o, ex) / Dot(ex, ex), v = Dot(q - o, ey) / Dot(ey, ey);
+        EXPECT_LE(std::fabs(u), 1.0) << size[0] << "x" << size[1] << " parallel " << parallel << " corner " << i;
+        EXPECT_LE(std::fabs(v), 1.0) << size[0] << "x" << size[1] << " parallel " << parallel << " corner " << i;
+      }
+    }
   }
 }
 
