@@ -92,6 +92,8 @@ ViewerApp::ViewerApp(ViewerOptions options)
   const double lo = Impl->Scene.Range[0], hi = Impl->Scene.Range[1];
   Impl->State.IsoStep = std::max((hi - lo) / 50.0, 1e-12);
   Impl->State.IsoValue = lo + 15 * Impl->State.IsoStep; // 30% of the range: bone on CT
+  Impl->State.IsoLo = lo;
+  Impl->State.IsoHi = hi;
 #ifdef ART_HAVE_Reduction
   if (Impl->Scene.Image) // the voxel checks (NaN, 2-D, components) fail here, before any window
   {
@@ -319,8 +321,15 @@ void ViewerApp::Internals::UpdateStatus()
   }
   else
   {
-    s = "level " + std::to_string(State.Level + 1) + "/" + std::to_string(Scene.Levels.size()) + ": " +
-      Scene.LevelLabels[State.Level];
+    // While the reduction runs, out of the levels asked for, as its progress bar counts them.
+    std::size_t total = Scene.Levels.size();
+#ifdef ART_HAVE_Reduction
+    if (Worker && !ReductionFinished)
+    {
+      total = std::max(total, Worker->NumberOfBudgets());
+    }
+#endif
+    s = "level " + std::to_string(State.Level + 1) + "/" + std::to_string(total) + ": " + Scene.LevelLabels[State.Level];
   }
   Status->SetInput(s.c_str());
 }

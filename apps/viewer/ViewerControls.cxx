@@ -3,6 +3,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkRenderWindowInteractor.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -42,11 +43,11 @@ KeyResult ApplyKey(ViewerState& s, char key, int levels)
       return KeyResult::Changed;
     case '+':
     case '=':
-      s.IsoValue += s.IsoStep;
+      s.IsoValue = std::min(s.IsoValue + s.IsoStep, s.IsoHi);
       s.Iso = true;
       return KeyResult::Changed;
     case '-':
-      s.IsoValue -= s.IsoStep;
+      s.IsoValue = std::max(s.IsoValue - s.IsoStep, s.IsoLo);
       s.Iso = true;
       return KeyResult::Changed;
     case 't':

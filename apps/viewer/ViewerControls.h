@@ -17,6 +17,8 @@ struct ViewerState
   bool FollowNewest = true; ///< show each new level as it arrives until the user picks one
   bool Iso = false;
   double IsoValue = 0, IsoStep = 1;
+  /// The data's range: + and - keep the iso-value in it (past it nothing is drawn).
+  double IsoLo = -1e300, IsoHi = 1e300;
   int ErtIndex = 0;         ///< into ErtSteps()
   bool Trapezoid = false;
   bool Edges = false;

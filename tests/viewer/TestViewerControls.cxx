@@ -127,6 +127,20 @@ TEST(ViewerControls, SettingsKeys)
   ApplyKey(s, '-', 1);
   EXPECT_DOUBLE_EQ(s.IsoValue, 110);
   EXPECT_TRUE(s.Iso); // changing the value shows the surface
+  // + and - stop at the data's range (probe14: 'on at 3069.1' over data up to 2697, nothing drawn).
+  s.IsoLo = 95;
+  s.IsoHi = 125;
+  for (int i = 0; i < 5; ++i)
+  {
+    ApplyKey(s, '+', 1);
+  }
+  EXPECT_DOUBLE_EQ(s.IsoValue, 125);
+  for (int i = 0; i < 5; ++i)
+  {
+    ApplyKey(s, '-', 1);
+  }
+  EXPECT_DOUBLE_EQ(s.IsoValue, 95);
+  s.IsoValue = 110;
 
   int n = 0;
   const double* steps = ErtSteps(&n);
