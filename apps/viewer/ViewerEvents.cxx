@@ -12,6 +12,7 @@
 
 #include <vtkCamera.h>
 #include <vtkImageData.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <cstdio>
@@ -114,6 +115,17 @@ void ViewerApp::Internals::PollReduction()
   const ReductionWorker::Status st = Worker->Poll();
   for (const art::ReducedMesh& m : Worker->TakeLevels())
   {
+    // A budget past what the volume holds (or needs) stops at the same mesh as the one before:
+    // said once, and not shown as another level (a 2 x 2 x 2 volume had '3 levels' of 6 tets).
+    if (!m.TargetReached && m.TargetTets > 0)
+    {
+      std::fprintf(stderr, "adaptivert-view: %s: note: %lld tets not reached: the reduction stopped at %lld, the finest "
+        "this volume allows or needs\n", Opt.File.c_str(), m.TargetTets, static_cast<long long>(m.NumberOfTets()));
+    }
+    if (!Scene.Levels.empty() && Scene.Levels.back()->GetNumberOfCells() == m.NumberOfTets())
+    {
+      continue;
+    }
     Scene.AddLevel(art::ToUnstructuredGrid(m), m.NumberOfTets(), m.Rms);
     if (State.FollowNewest)
     {
