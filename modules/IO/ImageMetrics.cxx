@@ -97,6 +97,51 @@ double ChannelSSIM(const Image& a, const Image& b, int c, const std::vector<doub
   }
   return sum / double(n);
 }
+// Over the first `channels` channels; the sizes checked.
+double RmseOver(const Image& a, const Image& b, int channels)
+{
+  const auto& pa = a.Pixels();
+  const auto& pb = b.Pixels();
+  if (pa.empty())
+  {
+    return 0.0;
+  }
+  double s = 0;
+  for (size_t i = 0; i < pa.size(); ++i)
+  {
+    if (static_cast<int>(i % 4) < channels)
+    {
+      const double d = double(pa[i]) - double(pb[i]);
+      s += d * d;
+    }
+  }
+  return std::sqrt(s / double(pa.size() / 4 * channels));
+}
+
+double SsimOver(const Image& a, const Image& b, int channels)
+{
+  if (a.Empty())
+  {
+    return 1.0;
+  }
+  std::vector<double> k(11);
+  double ks = 0;
+  for (int i = 0; i < 11; ++i)
+  {
+    k[i] = std::exp(-double((i - 5) * (i - 5)) / (2 * 1.5 * 1.5));
+    ks += k[i];
+  }
+  for (double& v : k)
+  {
+    v /= ks;
+  }
+  double s = 0;
+  for (int c = 0; c < channels; ++c)
+  {
+    s += ChannelSSIM(a, b, c, k);
+  }
+  return s / channels;
+}
 } // namespace
 
 void RequireFinite(const Image& img, const std::string& file)
@@ -123,23 +168,7 @@ void RequireFinite(const Image& img, const std::string& file)
 double RMSE(const Image& a, const Image& b)
 {
   CheckSameSize(a, b);
-  const auto& pa = a.Pixels();
-  const auto& pb = b.Pixels();
-  if (pa.empty())
-  {
-    return 0.0;
-  }
-  const int channels = Channels(a, b);
-  double s = 0;
-  for (size_t i = 0; i < pa.size(); ++i)
-  {
-    if (static_cast<int>(i % 4) < channels)
-    {
-      const double d = double(pa[i]) - double(pb[i]);
-      s += d * d;
-    }
-  }
-  return std::sqrt(s / double(pa.size() / 4 * channels));
+  return RmseOver(a, b, Channels(a, b));
 }
 
 double PSNR(const Image& a, const Image& b)
@@ -151,37 +180,17 @@ double PSNR(const Image& a, const Image& b)
 double SSIM(const Image& a, const Image& b)
 {
   CheckSameSize(a, b);
-  if (a.Empty())
-  {
-    return 1.0;
-  }
-  std::vector<double> k(11);
-  double ks = 0;
-  for (int i = 0; i < 11; ++i)
-  {
-    k[i] = std::exp(-double((i - 5) * (i - 5)) / (2 * 1.5 * 1.5));
-    ks += k[i];
-  }
-  for (double& v : k)
-  {
-    v /= ks;
-  }
-  const int channels = Channels(a, b);
-  double s = 0;
-  for (int c = 0; c < channels; ++c)
-  {
-    s += ChannelSSIM(a, b, c, k);
-  }
-  return s / channels;
+  return SsimOver(a, b, Channels(a, b));
 }
 
 ImageMetricsResult CompareImages(const Image& a, const Image& b)
 {
+  CheckSameSize(a, b); // and every value finite: once for all the figures
   ImageMetricsResult r;
-  r.rmse = RMSE(a, b);
-  r.psnr = r.rmse > 0 ? -20.0 * std::log10(r.rmse) : std::numeric_limits<double>::infinity();
-  r.ssim = SSIM(a, b);
   r.channels = Channels(a, b);
+  r.rmse = RmseOver(a, b, r.channels);
+  r.psnr = r.rmse > 0 ? -20.0 * std::log10(r.rmse) : std::numeric_limits<double>::infinity();
+  r.ssim = SsimOver(a, b, r.channels);
   for (size_t i = 0; i < a.Pixels().size(); ++i)
   {
     r.maxAbs = std::max(r.maxAbs, std::fabs(double(a.Pixels()[i]) - double(b.Pixels()[i])));
