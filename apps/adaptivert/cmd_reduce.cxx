@@ -209,15 +209,7 @@ int Run(const cli::Options& o)
     }
   }
   // With --max-error the run may stop before a level's budget: say which files were not written.
-  std::vector<long long> missing;
-  for (long long b : opt.Levels)
-  {
-    if (std::none_of(meshes.begin(), meshes.end() - 1, [b](const art::ReducedMesh& m) { return m.TargetTets == b; }) &&
-      std::find(missing.begin(), missing.end(), b) == missing.end())
-    {
-      missing.push_back(b);
-    }
-  }
+  const std::vector<long long> missing = art::UnreachedLevels(opt.Levels, meshes);
   for (long long b : missing)
   {
     std::fprintf(stderr, "adaptivert: %s: level %lld not written: the reduction stopped at %lld tets\n",

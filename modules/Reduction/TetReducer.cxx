@@ -559,4 +559,19 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
   }
   return out;
 }
+
+std::vector<long long> UnreachedLevels(const std::vector<long long>& levels, const std::vector<ReducedMesh>& meshes)
+{
+  std::vector<long long> missing;
+  for (long long b : levels)
+  {
+    if (std::none_of(meshes.begin(), meshes.empty() ? meshes.end() : meshes.end() - 1,
+          [b](const ReducedMesh& m) { return m.TargetTets == b; }) &&
+      std::find(missing.begin(), missing.end(), b) == missing.end())
+    {
+      missing.push_back(b);
+    }
+  }
+  return missing;
+}
 } // namespace art

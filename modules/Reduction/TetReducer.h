@@ -161,6 +161,11 @@ public:
 private:
   ReducerOptions Opt;
 };
+
+/// The budgets of `levels` that `meshes` (a Run's output, the final mesh last) holds no level
+/// for, once each in the order asked: an error target stopped the refinement before them.
+ADAPTIVERTREDUCTION_EXPORT std::vector<long long> UnreachedLevels(
+  const std::vector<long long>& levels, const std::vector<ReducedMesh>& meshes);
 } // namespace art
 
 #endif

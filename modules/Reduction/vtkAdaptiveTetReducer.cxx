@@ -325,13 +325,10 @@ int vtkAdaptiveTetReducer::RequestData(
         ("tets_" + std::to_string(meshes[i].NumberOfTets())).c_str());
     }
     // A level an error target stopped short of is not among the blocks: say so, as reduce does.
-    for (long long l : opt.Levels)
+    for (long long l : art::UnreachedLevels(opt.Levels, meshes))
     {
-      if (std::none_of(meshes.begin(), meshes.end() - 1, [l](const art::ReducedMesh& m) { return m.TargetTets == l; }))
-      {
-        vtkWarningMacro("Level " << l << " was not reached: the reduction stopped at " << last.NumberOfTets()
-                                  << " tets.");
-      }
+      vtkWarningMacro("Level " << l << " was not reached: the reduction stopped at " << last.NumberOfTets()
+                                << " tets.");
     }
   }
   catch (const art::Error& e)
