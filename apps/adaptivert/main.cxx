@@ -1,6 +1,6 @@
 // adaptivert: the command-line tool. `adaptivert <subcommand> [options] INPUT...`
 // Errors: one line "adaptivert: <file>: <what>" on stderr; exit 1 at run time, 2 for usage.
-#include "Command.h"
+#include "cli/Command.h"
 #include "Error.h"
 
 #include <cstdio>

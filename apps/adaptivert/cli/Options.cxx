@@ -1,0 +1,167 @@
+#include "cli/Options.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace cli
+{
+void Options::Add(const std::string& name, char shortName, const std::string& value,
+  const std::string& help, const std::string& def)
+{
+  Specs[name] = { shortName, value, help, def };
+  Order.push_back(name);
+}
+
+void Options::Parse(int argc, char** argv, int first)
+{
+  bool onlyPositional = false;
+  for (int i = first; i < argc; ++i)
+  {
+    std::string a = argv[i];
+    if (onlyPositional || a.size() < 2 || a[0] != '-')
+    {
+      Args.push_back(a);
+      continue;
+    }
+    if (a == "--")
+    {
+      onlyPositional = true;
+      continue;
+    }
+    std::string name, value;
+    bool inlineValue = false;
+    if (a.rfind("--", 0) == 0)
+    {
+      name = a.substr(2);
+      const auto eq = name.find('=');
+      if (eq != std::string::npos)
+      {
+        value = name.substr(eq + 1);
+        name = name.substr(0, eq);
+        inlineValue = true;
+      }
+    }
+    else
+    {
+      for (const auto& [n, s] : Specs)
+      {
+        if (a.size() == 2 && s.shortName == a[1])
+        {
+          name = n;
+        }
+      }
+      if (name.empty())
+      {
+        throw UsageError("unknown option '" + a + "'");
+      }
+    }
+    const auto it = Specs.find(name);
+    if (it == Specs.end())
+    {
+      throw UsageError("unknown option '--" + name + "'");
+    }
+    if (it->second.value.empty())
+    {
+      if (inlineValue)
+      {
+        throw UsageError("option '--" + name + "' takes no value");
+      }
+      Values[name] = "1";
+      continue;
+    }
+    if (!inlineValue)
+    {
+      if (i + 1 >= argc)
+      {
+        throw UsageError("option '--" + name + "' needs a value (" + it->second.value + ")");
+      }
+      value = argv[++i];
+    }
+    Values[name] = value;
+  }
+}
+
+bool Options::Has(const std::string& name) const
+{
+  return Values.count(name) != 0;
+}
+
+std::string Options::Get(const std::string& name) const
+{
+  const auto v = Values.find(name);
+  if (v != Values.end())
+  {
+    return v->second;
+  }
+  const auto s = Specs.find(name);
+  return s == Specs.end() ? std::string() : s->second.def;
+}
+
+double Options::GetDouble(const std::string& name) const
+{
+  const std::string v = Get(name);
+  char* end = nullptr;
+  const double d = std::strtod(v.c_str(), &end);
+  // strtod takes "nan", which no option means and which slips past range checks written as
+  // comparisons (--azimuth nan crashed the voxel reference).
+  if (v.empty() || *end != '\0' || std::isnan(d))
+  {
+    throw UsageError("option '--" + name + "' expects a number, got '" + v + "'");
+  }
+  return d;
+}
+
+long long GetIntImpl(const std::string& name, const std::string& v)
+{
+  char* end = nullptr;
+  const long long n = std::strtoll(v.c_str(), &end, 10);
+  if (v.empty() || *end != '\0')
+  {
+    throw UsageError("option '--" + name + "' expects an integer, got '" + v + "'");
+  }
+  return n;
+}
+
+long long Options::GetInt(const std::string& name) const
+{
+  return GetIntImpl(name, Get(name));
+}
+
+void Options::GetSize(const std::string& name, int& w, int& h) const
+{
+  const std::string v = Get(name);
+  const auto x = v.find_first_of("xX");
+  if (x == std::string::npos)
+  {
+    throw UsageError("option '--" + name + "' expects WxH, got '" + v + "'");
+  }
+  const long long a = GetIntImpl(name, v.substr(0, x)), b = GetIntImpl(name, v.substr(x + 1));
+  if (a < 1 || b < 1 || a > 16384 || b > 16384)
+  {
+    throw UsageError("option '--" + name + "' size out of range 1..16384: '" + v + "'");
+  }
+  w = static_cast<int>(a);
+  h = static_cast<int>(b);
+}
+
+std::string Options::Help() const
+{
+  std::ostringstream os;
+  for (const auto& name : Order)
+  {
+    const Spec& s = Specs.at(name);
+    std::string left = "  ";
+    left += s.shortName ? std::string("-") + s.shortName + ", " : std::string("    ");
+    left += "--" + name + (s.value.empty() ? "" : " " + s.value);
+    os << left;
+    os << std::string(left.size() < 30 ? 30 - left.size() : 1, ' ') << s.help;
+    if (!s.def.empty())
+    {
+      os << " (default " << s.def << ")";
+    }
+    os << "\n";
+  }
+  return os.str();
+}
+} // namespace cli

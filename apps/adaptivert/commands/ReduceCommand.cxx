@@ -1,0 +1,267 @@
+// adaptivert reduce IN OUT.vtu: the least-squares reducer from voxels to an adaptive tet grid
+// (AdaptiveRT::Reduction), to a tet budget or an error bound, optionally with nested levels.
+#include "cli/Command.h"
+
+#ifdef ART_HAVE_Reduction
+#include "DataLoader.h"
+#include "Error.h"
+#include "cli/Json.h"
+#include "MeshQuality.h"
+#include "Progress.h"
+#include "cli/ProgressBar.h"
+#include "rendering/ReductionTargets.h"
+#include "ReducerVTK.h"
+#include "TetReducer.h"
+
+#ifdef ART_HAVE_TetRayCast
+#include "TransferFunction.h"
+#endif
+
+#include <vtkImageData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+namespace
+{
+std::string Grouped(long long n)
+{
+  std::string s = std::to_string(n), o;
+  for (size_t i = 0; i < s.size(); ++i)
+  {
+    o += s[i];
+    if ((s.size() - 1 - i) % 3 == 0 && i + 1 < s.size())
+    {
+      o += ',';
+    }
+  }
+  return o;
+}
+
+void Declare(cli::Options& o)
+{
+  o.Add("output", 'o', "FILE", "the output .vtu, as render takes it (or give it after the input)");
+  o.Add("array", 0, "NAME", "point array to reduce (default: the active scalars, else the first one-component array); NAME:magnitude or NAME:N for a vector's magnitude or component N");
+  o.Add("tets", 't', "N", "stop at N tetrahedra (or N% of the voxel count)");
+  o.Add("max-error", 'e', "E",
+    "stop when the error (opacity-weighted with --tf) is at most E data units (E% of the scalar range)");
+  o.Add("metric", 0, "rms|max", "which error --max-error bounds", "rms");
+  o.Add("levels", 0, "LIST", "also write nested levels from the same run, e.g. 0.01%,0.1%,5000: OUT_<n>.vtu");
+  o.Add("refine-fraction", 0, "F", "tet growth per refinement level (0: automatic, 0.5 then 0.2 near a budget with bisection, 0.2 with edge)", "0");
+  o.Add("tolerance", 0, "T", "conjugate-gradient relative residual", "1e-8");
+  o.Add("refinement", 0, "bisection|edge",
+    "bisection: newest-vertex, near-regular tets; edge: split the edges that remove the most error "
+    "(thin tets along sharp surfaces, lower error per tet, slower)", "bisection");
+  o.Add("relocate", 0, "", "move each output's vertices off the bisection lattice toward the surfaces they fit "
+    "(lower error at the same tets; levels no longer nested; slower)");
+  o.Add("clamp", 0, "", "clamp each vertex value to the range of the voxels under its tets (no overshoot at sharp edges; for maximum-intensity projection)");
+  o.Add("tf", 0, "NAME|FILE",
+    "reduce for this transfer function's opacity (a preset, e.g. ct-skin-bone, or a file of "
+    "'scalar r g b opacity' lines, or a ParaView preset .json): tets go where opacity changes, "
+    "and a value fitted past its voxels into a more opaque range is clamped to theirs");
+}
+
+int Run(const cli::Options& o)
+{
+  // -o OUT as render takes it, or OUT after the input ('reduce in.mha -o out.vtu' was an unknown option).
+  const auto& pos = o.Positional();
+  if (pos.size() != (o.Has("output") ? 1u : 2u))
+  {
+    throw cli::UsageError(o.Has("output") && pos.size() == 2 ? "give the output once: after the input or with -o"
+                                                           : "needs an input volume and an output .vtu");
+  }
+  const std::string in = pos[0], outPath = o.Has("output") ? o.Get("output") : pos[1];
+  std::string ext = std::filesystem::path(outPath).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext != ".vtu") // any case, as SaveMesh takes it (OUT.VTU)
+  {
+    throw cli::UsageError("the output must be a .vtu file, got '" + outPath + "'");
+  }
+  if (!o.Has("tets") && !o.Has("max-error"))
+  {
+    throw cli::UsageError("give --tets N or --max-error E");
+  }
+  art::ReducerOptions opt;
+  const std::string metric = o.Get("metric");
+  if (metric != "rms" && metric != "max")
+  {
+    throw cli::UsageError("--metric is rms or max, got '" + metric + "'");
+  }
+  opt.ErrorMetric = metric == "max" ? art::ReducerOptions::Metric::Max : art::ReducerOptions::Metric::RMS;
+  opt.Refine = cli::ParseEdgeRefinement(o.Get("refinement"), "--refinement") ? art::ReducerOptions::Refinement::EdgeSplit
+                                                             : art::ReducerOptions::Refinement::Bisection;
+  opt.RefineFraction = o.GetDouble("refine-fraction");
+  opt.ClampToVoxels = o.Flag("clamp");
+  opt.RelocateVertices = o.Flag("relocate");
+  opt.SolverTolerance = o.GetDouble("tolerance");
+  if (!(opt.RefineFraction >= 0.0 && opt.RefineFraction <= 4.0) || !(opt.SolverTolerance > 0 && opt.SolverTolerance < 1))
+  {
+    throw cli::UsageError("--refine-fraction must be in [0, 4] and --tolerance in (0, 1)");
+  }
+
+  auto image = art::LoadVolume(in, o.Get("array"));
+  art::RequireOneComponent(image, in);
+  const art::VoxelVolume volume = art::VolumeFromImage(image, in);
+  const long long voxels = volume.NumberOfVoxels();
+  if (o.Has("tf"))
+  {
+#ifdef ART_HAVE_TetRayCast
+    const std::string tf = o.Get("tf");
+    const art::TransferFunction f =
+      art::TransferFunction::NamesFile(tf) ? art::TransferFunction::FromFile(tf) : art::TransferFunction::Preset(tf, volume.Range[0], volume.Range[1]);
+    opt.ScalarOpacity = f.OpacityPoints();
+#else
+    throw cli::UsageError("--tf needs the TetRayCast module (transfer functions), which is not in this build");
+#endif
+  }
+  if (o.Has("tets"))
+  {
+    opt.TargetTets = cli::ParseBudget(o.Get("tets"), voxels, "--tets");
+  }
+  if (o.Has("max-error"))
+  {
+    opt.TargetError = cli::ParseMaxError(o.Get("max-error"), opt.ErrorRelative);
+  }
+  if (o.Has("levels"))
+  {
+    std::string list = o.Get("levels");
+    size_t a = 0;
+    while (a <= list.size())
+    {
+      const size_t b = std::min(list.find(',', a), list.size());
+      const long long n = cli::ParseBudget(list.substr(a, b - a), voxels, "--levels");
+      // A level is a coarser mesh met on the way to the output; one at or past --tets never is
+      // (it was dropped without a word).
+      if (opt.TargetTets > 0 && n >= opt.TargetTets)
+      {
+        throw cli::UsageError("--levels: " + std::to_string(n) + " tets is not below --tets " +
+          std::to_string(opt.TargetTets) + " (levels are the coarser meshes written on the way)");
+      }
+      opt.Levels.push_back(n);
+      a = b + 1;
+    }
+  }
+  for (long long b : opt.Levels)
+  {
+    if (b < 6)
+    {
+      throw cli::UsageError("a level below 6 tets is not possible (" + std::to_string(b) + ")");
+    }
+  }
+  if (opt.TargetTets > 0 && opt.TargetTets < 6)
+  {
+    throw cli::UsageError("--tets must be at least 6 (one box)");
+  }
+
+  const bool json = o.Flag("json");
+  cli::ProgressBar bar(o.Flag("quiet"));
+  art::Progress progress(bar.Callback());
+  const auto meshes = art::TetReducer(opt).Run(volume, &progress);
+  bar.Finish();
+  if (meshes.empty())
+  {
+    throw art::Error("the reduction produced no mesh", in);
+  }
+  const bool asDouble = volume.DoubleValues;
+  const double range = volume.Range[1] - volume.Range[0];
+  const double pct = range > 0 ? 100.0 / range : 0.0;
+  std::vector<cli::Json> levels;
+  const std::filesystem::path op(outPath);
+  // Every mesh is checked before any file is written: a failed check must not have replaced
+  // an existing OUT.vtu already.
+  for (const auto& m : meshes)
+  {
+    const auto mq = art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets());
+    if (!mq.Valid())
+    {
+      throw art::Error("internal: a reduced mesh failed its conformity check: " + mq.Summary(), outPath);
+    }
+  }
+  for (size_t i = 0; i < meshes.size(); ++i)
+  {
+    const auto& m = meshes[i];
+    const bool last = i + 1 == meshes.size();
+    const std::string file = last ? outPath
+                                  : (op.parent_path() / (op.stem().string() + "_" +
+                                        std::to_string(m.TargetTets > 0 ? m.TargetTets : m.NumberOfTets()) + ".vtu")).string();
+    art::SaveMesh(art::ToUnstructuredGrid(m, asDouble), file);
+    cli::Json j;
+    j.Set("file", file).Set("tets", m.NumberOfTets()).Set("vertices", m.NumberOfVertices())
+      .Set("target_tets", m.TargetTets).Set("rms_error", m.Rms).Set("max_error", m.Max)
+      .Set("rms_error_percent", m.Rms * pct).Set("max_error_percent", m.Max * pct)
+      .Set("build_seconds", m.BuildSeconds).Set("target_reached", m.TargetReached);
+    if (m.Weighted)
+    {
+      j.Set("weighted_rms_error", m.WeightedRms).Set("weighted_max_error", m.WeightedMax);
+    }
+    levels.push_back(j);
+    if (!json)
+    {
+      std::printf("%-12s %s: %s tets, %s vertices, RMS %.4g (%.3f%% of range), max %.4g (%.2f%%), %.2f s%s\n",
+        last ? "output" : "level", file.c_str(), Grouped(m.NumberOfTets()).c_str(),
+        Grouped(m.NumberOfVertices()).c_str(), m.Rms, m.Rms * pct, m.Max, m.Max * pct, m.BuildSeconds,
+        m.TargetReached ? "" : (" (" + cli::UnreachedReason(m, volume, opt.TargetTets == 0) + ")").c_str());
+    }
+  }
+  // With --max-error the run may stop before a level's budget: say which files were not written.
+  const std::vector<long long> missing = art::UnreachedLevels(opt.Levels, meshes);
+  for (long long b : missing)
+  {
+    std::fprintf(stderr, "adaptivert: %s: level %lld not written: the reduction stopped at %lld tets\n",
+      outPath.c_str(), b, static_cast<long long>(meshes.back().NumberOfTets()));
+  }
+  const auto& f = meshes.back();
+  const auto q = art::MeasureQuality(f.Points.data(), f.NumberOfVertices(), f.Tets.data(), f.NumberOfTets());
+  if (json)
+  {
+    cli::Json j;
+    j.Set("input", in).Set("output", outPath).Set("voxels", voxels)
+      .Set("tets", f.NumberOfTets()).Set("vertices", f.NumberOfVertices())
+      .Set("rms_error", f.Rms).Set("max_error", f.Max).Set("rms_error_percent", f.Rms * pct)
+      .Set("max_error_percent", f.Max * pct).Set("build_seconds", f.BuildSeconds)
+      .Set("target_reached", f.TargetReached).Set("scalar_range", std::vector<double>{ volume.Range[0], volume.Range[1] })
+      .Set("min_dihedral_degrees", q.MinDihedralDegrees).Set("min_radius_ratio", q.MinRadiusRatio)
+      .Set("mean_radius_ratio", q.MeanRadiusRatio).Set("weighted", f.Weighted);
+    if (f.Weighted)
+    {
+      j.Set("weighted_rms_error", f.WeightedRms).Set("weighted_max_error", f.WeightedMax);
+    }
+    j.Set("levels", levels);
+    j.Set("levels_not_written", std::vector<double>(missing.begin(), missing.end()));
+    std::printf("%s\n", j.Str().c_str());
+  }
+  else
+  {
+    std::printf("input        %s (%d x %d x %d = %s voxels, range %g .. %g)\n", in.c_str(), volume.Dims[0],
+      volume.Dims[1], volume.Dims[2], Grouped(voxels).c_str(), volume.Range[0], volume.Range[1]);
+    std::printf("tets         %s (%s vertices, %.4f%% of the voxel count)\n", Grouped(f.NumberOfTets()).c_str(),
+      Grouped(f.NumberOfVertices()).c_str(), 100.0 * f.NumberOfTets() / voxels);
+    std::printf("error        RMS %.4g, max %.4g data units (%.3f%% / %.2f%% of the range)\n", f.Rms, f.Max,
+      f.Rms * pct, f.Max * pct);
+    if (f.Weighted)
+    {
+      std::printf("weighted     RMS %.4g, max %.4g data units (opacity-weighted error of --tf %s)\n", f.WeightedRms,
+        f.WeightedMax, o.Get("tf").c_str());
+    }
+    std::printf("quality      min dihedral %.1f deg, radius ratio min %.3f mean %.3f, 0 inverted, conforming\n",
+      q.MinDihedralDegrees, q.MinRadiusRatio, q.MeanRadiusRatio);
+    std::printf("time         %.2f s\n", f.BuildSeconds);
+  }
+  return cli::ExitOk;
+}
+
+cli::Registrar reg({ "reduce",
+  "reduce a volume to an adaptive tetrahedral grid by least squares (to a tet count or an error)",
+  "adaptivert reduce [options] IN OUT.vtu  (or IN -o OUT.vtu)",
+  "  adaptivert reduce data/ct-head-128.mha head.vtu --tets 20000\n"
+  "  adaptivert reduce head.mha head.vtu --max-error 1% --metric rms\n"
+  "  adaptivert reduce head.mha head.vtu --tets 1% --levels 0.01%,0.1%   (writes head_<n>.vtu too)\n"
+  "  adaptivert reduce data/ct-head-128.mha head.vtu --tets 50000 --tf ct-skin-bone\n",
+  Declare, Run });
+} // namespace
+#endif

@@ -1,0 +1,52 @@
+// Render: the `adaptivert render` subcommand dispatches on the input's kind to a renderer that
+// registers itself here (the tet caster for volumes and meshes, the surface tracer for
+// triangle scenes). The options every renderer shares are declared once in commands/RenderCommand.cxx.
+#ifndef adaptivert_Render_h
+#define adaptivert_Render_h
+
+#include "Box3.h"
+#include "DataLoader.h"
+#include "cli/Options.h"
+
+#include <string>
+#include <vector>
+
+class vtkCamera;
+
+namespace cli
+{
+struct Renderer
+{
+  std::string name;                 ///< "tets", "surface"
+  std::vector<art::DataKind> kinds; ///< inputs it renders
+  void (*declare)(Options&) = nullptr;                       ///< its own options
+  int (*run)(const Options&, const std::string& input) = nullptr; ///< exit code
+};
+
+std::vector<Renderer>& Renderers();
+
+/// False when only other kinds' renderers declare --option (--tets for a surface, --opacity for a
+/// volume); `render` refuses such options, and batch jobs leave them out of those frames.
+bool OptionAppliesTo(const std::string& option, art::DataKind kind);
+/// Whether `render` declares --option (its own, a renderer's or the common ones), by long name.
+bool IsRenderOption(const std::string& option);
+
+struct RendererRegistrar
+{
+  explicit RendererRegistrar(Renderer r) { Renderers().push_back(std::move(r)); }
+};
+
+/// The shared view options: --size WxH, --azimuth, --elevation, --zoom, --parallel.
+struct View
+{
+  int width = 800, height = 600;
+  std::string output; ///< -o
+  float background[3] = { 0.f, 0.f, 0.f };
+};
+View ViewFromOptions(const Options& o);
+/// Frames `bounds` with the shared camera options. The default view looks along +y with +z up
+/// (the anterior view of a scan in patient coordinates), which also suits most scenes.
+void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam);
+} // namespace cli
+
+#endif
