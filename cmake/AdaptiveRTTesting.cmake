@@ -45,7 +45,7 @@ function(art_render_baseline_test name)
   set_tests_properties(${name} PROPERTIES LABELS image)
 endfunction()
 
-# A command-line check, F3D style (tests/cli/expect.cmake runs one command and asserts its exit
+# A command-line check, F3D style (apps/adaptivert/Testing/expect.cmake runs one command and asserts its exit
 # code and what it prints): art_expect_test(<test name> [PROGRAM <exe>] EXIT <code>
 # [STDOUT <regex>] [STDERR <regex>] [ONE_LINE_STDERR] [LABELS ..] ARGS ...). PROGRAM defaults to
 # the adaptivert tool, LABELS to unit.
@@ -69,6 +69,6 @@ function(art_expect_test name)
   add_test(NAME ${name} COMMAND ${CMAKE_COMMAND}
     "-DCMD=${arg_PROGRAM}" "-DARGS=${_args}" "-DEXIT=${arg_EXIT}"
     "-DSTDOUT=${arg_STDOUT}" "-DSTDERR=${arg_STDERR}" "-DONE_LINE=${arg_ONE_LINE_STDERR}"
-    -P "${CMAKE_SOURCE_DIR}/tests/cli/expect.cmake")
+    -P "${CMAKE_SOURCE_DIR}/apps/adaptivert/Testing/expect.cmake")
   set_tests_properties(${name} PROPERTIES LABELS "${arg_LABELS}")
 endfunction()

@@ -562,10 +562,10 @@ TEST(Formats, DicomSeriesFolder)
 // vtkDICOMImageReader keeps rows bottom-up and slices far-to-near with origin 0 and no
 // direction, and swaps PixelSpacing's pair: a series with turned axes and non-square pixels came
 // out rotated and stretched against the same voxels from ITK or a MetaImage. Each voxel must land
-// at ImagePositionPatient + i * 0.7 * r + j * 0.9 * c + k * 1.5 * n (tests/cli/make_dicom_rotated.py).
+// at ImagePositionPatient + i * 0.7 * r + j * 0.9 * c + k * 1.5 * n (tests/data/make_dicom_rotated.py).
 TEST(Formats, DicomPatientGeometry)
 {
-  auto img = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/tests/cli/dicom-rotated");
+  auto img = art::LoadVolume(std::string(ART_SOURCE_DIR) + "/tests/data/dicom-rotated");
   int d[3];
   img->GetDimensions(d);
   ASSERT_EQ(d[0], 4);

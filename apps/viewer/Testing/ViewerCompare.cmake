@@ -1,7 +1,7 @@
 # Runs adaptivert-view with a script and --screenshot, then checks the screenshot against a
 # committed baseline with `adaptivert compare`. Needs an X display (CI: xvfb-run -a); without
 # one it prints "skipped" (the test's SKIP_REGULAR_EXPRESSION). Time-boxed.
-include("${CMAKE_CURRENT_LIST_DIR}/../../cmake/CompareWithBaseline.cmake")
+include("${CMAKE_CURRENT_LIST_DIR}/../../../cmake/CompareWithBaseline.cmake")
 if(NOT DEFINED ENV{DISPLAY} OR "$ENV{DISPLAY}" STREQUAL "")
   message(STATUS "no DISPLAY: skipped (run under xvfb-run -a)")
   return()

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Makes tests/cli/dicom-rotated/: a 3-slice, 3-row, 4-column series whose rows run along +y and
+"""Makes tests/data/dicom-rotated/: a 3-slice, 3-row, 4-column series whose rows run along +y and
 columns along -x (ImageOrientationPatient 0,1,0,-1,0,0), non-square pixels (row spacing 0.9,
 column spacing 0.7), slices 1.5 apart from (10, 20, 30), files and instance numbers in reverse
 order. Voxel (column i, row j, slice k) holds 100 k + 10 j + i, so a test can check where each

@@ -1,0 +1,213 @@
+# `adaptivert render`: volumes, tet meshes and triangle scenes to images; baselines and bad options.
+
+art_expect_test(cli.bad_components EXIT 1
+  STDERR "rgb-3x3x3.vti: the scalars 'rgb' have 3 components; one is needed \\(choose with --array rgb:magnitude or rgb:0 .. rgb:2"
+  ONE_LINE_STDERR ARGS render "${_bad}/rgb-3x3x3.vti" -o "${ART_TEST_OUTPUT}/never.png")
+# A vector's magnitude or one component renders and reduces (what VTK's mappers draw with VectorMode).
+art_expect_test(cli.render_vector_magnitude EXIT 0 STDOUT "full-resolution tets.*output"
+  ARGS render "${_bad}/rgb-3x3x3.vti" -o "${ART_TEST_OUTPUT}/rgb-magnitude.png" --array rgb:magnitude --size 16x16 --no-error)
+art_expect_test(cli.bad_vector_component EXIT 1 STDERR "rgb-3x3x3.vti: array 'rgb' has 3 components \\(0 .. 2\\), not a component 3"
+  ONE_LINE_STDERR ARGS render "${_bad}/rgb-3x3x3.vti" -o "${ART_TEST_OUTPUT}/never.png" --array rgb:3)
+# Face colours (a PLY's red, green, blue on its faces) were dropped: the cube rendered grey. It
+# renders as the same cube with the colours on corners of each face's own (tests/data/colours).
+art_render_baseline_test(image.surface_face_colours BASELINE surface-face-colours.png MIN_PSNR 40 MIN_SSIM 0.98
+  ARGS "${CMAKE_SOURCE_DIR}/tests/data/colours/face-colours.ply" --size 96x96 --azimuth 30 --elevation 25)
+# The same cube as an OBJ coloured by materials (usemtl, Kd in two .mtl libraries) was grey too.
+art_render_baseline_test(image.surface_obj_material_colours BASELINE surface-face-colours.png MIN_PSNR 40 MIN_SSIM 0.98
+  ARGS "${CMAKE_SOURCE_DIR}/tests/data/colours/cube.obj" --size 96x96 --azimuth 30 --elevation 25)
+# render says the same of its reduction (it said "no finer tets than the voxels allow").
+art_expect_test(cli.render_constant_is_exact EXIT 0
+  STDOUT "mesh .*; tet budget not reached: the fit is exact, no tet has an error left to refine\\): [0-9]+ tets"
+  ARGS render "${CMAKE_CURRENT_BINARY_DIR}/constant-5.mha" -o "${ART_TEST_OUTPUT}/constant-5.png" --size 8x8 --tets 300 --no-error)
+# A NaN angle is a usage error (it crashed the voxel reference); an infinite one a run-time error.
+art_expect_test(cli.render_nan_azimuth EXIT 2 STDERR "option '--azimuth' expects a number, got 'nan'" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${ART_TEST_OUTPUT}/never.png" --size 20x20 --azimuth nan)
+art_expect_test(cli.render_inf_elevation EXIT 1 STDERR "camera azimuth and elevation must be finite" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/am_underworks.ply" -o "${ART_TEST_OUTPUT}/never.png" --size 20x20 --elevation inf)
+# render: the reduction options on a tet mesh are a usage error, as another kind's options are; a
+# mesh renders as it is, and --tets 500 drew all of its tets without a word.
+art_expect_test(cli.render_mesh_reduction_option EXIT 2 ONE_LINE_STDERR
+  STDERR "--tets does not apply to a mesh \\(it reduces or casts a voxel volume; a tet mesh renders as it is\\)"
+  ARGS render "${CMAKE_SOURCE_DIR}/tests/data/mixed/hex-and-triangle.vtu" -o "${ART_TEST_OUTPUT}/never.png" --tets 500)
+# A scene whose every triangle is degenerate says why it has nothing to render.
+art_expect_test(cli.render_degenerate_scene EXIT 1
+  STDERR "degenerate.ply: has no triangles to render: all 2 polygons have zero area" ONE_LINE_STDERR
+  ARGS render "${_bad}/degenerate.ply" -o "${ART_TEST_OUTPUT}/never.png")
+# A flat scene (a floor plan in z = 0) is seen from above by default (it was edge-on from the
+# front: background only); turned edge-on, the image is background only and render says why.
+file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/floor.obj" "v 0 0 0\nv 4 0 0\nv 4 3 0\nv 0 3 0\nf 1 2 3 4\n")
+art_expect_test(cli.render_flat_scene_edge_on EXIT 0
+  STDOUT "note +no surface is in view: the scene is flat in z and seen edge-on \\(the default view, without --azimuth and --elevation, looks at it face on\\)"
+  ARGS render "${CMAKE_CURRENT_BINARY_DIR}/floor.obj" -o "${ART_TEST_OUTPUT}/floor.png" --size 32x32 --elevation 90 --quiet)
+art_expect_test(cli.render_flat_scene_from_above EXIT 0 STDOUT "\"covered_pixels\":[1-9]"
+  ARGS render "${CMAKE_CURRENT_BINARY_DIR}/floor.obj" -o "${ART_TEST_OUTPUT}/floor-above.png" --size 32x32 --json)
+# A camera placed straight above the floor (view direction along z, the default view-up) traced
+# NaN rays: one flat colour over all 1024 pixels. The 4 x 3 floor seen from 10 above its centre
+# with the 30 degree view angle covers 24 x 18 pixels (2 / (10 tan 15 deg) of the half-width).
+art_expect_test(cli.render_camera_straight_above EXIT 0 STDOUT "\"covered_pixels\":432[,}]"
+  ARGS render "${CMAKE_CURRENT_BINARY_DIR}/floor.obj" -o "${ART_TEST_OUTPUT}/floor-top.png" --size 32x32
+  --camera-position 2,1.5,10 --focal-point 2,1.5,0 --json --quiet)
+# --zoom on a perspective view of a scene was undone by the view angle set after framing: 432
+# pixels at any zoom. At 0.5 the floor covers about a quarter of them.
+art_expect_test(cli.render_surface_zoom EXIT 0 STDOUT "\"covered_pixels\":96[,}]"
+  ARGS render "${CMAKE_CURRENT_BINARY_DIR}/floor.obj" -o "${ART_TEST_OUTPUT}/floor-zoom.png" --size 32x32
+  --zoom 0.5 --json --quiet)
+art_expect_test(cli.render_surface_zoom_camera_position EXIT 0 STDOUT "\"covered_pixels\":96[,}]"
+  ARGS render "${CMAKE_CURRENT_BINARY_DIR}/floor.obj" -o "${ART_TEST_OUTPUT}/floor-zoom-cp.png" --size 32x32
+  --camera-position 2,1.5,10 --focal-point 2,1.5,0 --zoom 0.5 --json --quiet)
+# A tet mesh clipped through grid points (ParaView's Clip with its default plane through the
+# centre: vtkTableBasedClipDataSet leaves flat pieces on the plane) was refused by render and the
+# mapper alike ('a face of tet 0 is shared by 5 tets'). The flat pieces are left out, the 160 tets
+# of the kept half stay.
+art_expect_test(cli.render_clipped_through_grid_points EXIT 0
+  STDOUT "flat tets \\(no volume, as a clip through grid points leaves\\) were left out.*mesh +tet mesh: 160 tets"
+  ARGS render "${CMAKE_SOURCE_DIR}/tests/data/clipped/half-box.vtu" -o "${ART_TEST_OUTPUT}/half-box.png" --size 32x32 --no-error)
+art_expect_test(cli.render_missing_output_folder_first EXIT 1 STDERR "x.png: folder '.*no-such-folder' does not exist"
+  ONE_LINE_STDERR ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${ART_TEST_OUTPUT}/no-such-folder/x.png"
+  --size 16x16 --tets 2000)
+art_expect_test(cli.render_output_is_folder_first EXIT 1 STDERR "is a directory, expected a file name"
+  ONE_LINE_STDERR ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${CMAKE_CURRENT_BINARY_DIR}/folder.png"
+  --size 16x16 --tets 2000)
+# A render no ray of which meets the data (zoomed far out, or clipped away) wrote a blank image
+# with "PSNR inf dB" and no word; it says so, as render does of a surface out of view.
+art_expect_test(cli.render_no_ray_meets_the_data EXIT 0
+  STDOUT "note +no ray meets the data .*background only"
+  ARGS render "${_tetdata}/two-tets.vtu" -o "${ART_TEST_OUTPUT}/no-ray.png"
+  --size 16x16 --clip 1e308,0,0,1,0,0)
+# Values whose squares overflow or vanish are one line saying how to rescale them: render of a
+# volume or a mesh of 1e-310 crashed (SIGSEGV in the transfer function's table, its range's inverse
+# inf), and reduce of values of 1e300 wrote a 108-tet mesh with 'RMS inf'.
+art_expect_test(cli.render_denormal_values EXIT 1
+  STDERR "denormal-4x4x4.vti: the scalars' range 1e-310 .. 2.73205e-310 lies below 1e-150 in magnitude: .* rescale them first"
+  ONE_LINE_STDERR ARGS render "${_bad}/denormal-4x4x4.vti" -o "${ART_TEST_OUTPUT}/never.png" --size 16x16 --reference)
+art_expect_test(cli.render_denormal_mesh EXIT 1
+  STDERR "denormal-tet.vtu: the scalars' range 1e-310 .. 4e-310 lies below 1e-150 in magnitude"
+  ONE_LINE_STDERR ARGS render "${_bad}/denormal-tet.vtu" -o "${ART_TEST_OUTPUT}/never.png" --size 16x16)
+# A NaN cell scalar (a masked or failed cell of a simulation) is named as a cell; it was averaged
+# to its corners and reported as '4 points have a NaN ...' of a mesh with no point data. info
+# counts such values beside the array's range, which leaves them out.
+art_expect_test(cli.render_nan_cell EXIT 1
+  STDERR "nan-cell.vtu: cell array 'pressure' holds NaN or infinite values in 1 cell \\(the first: cell 1\\)"
+  ONE_LINE_STDERR ARGS render "${_bad}/nan-cell.vtu" -o "${ART_TEST_OUTPUT}/never.png" --size 16x16)
+# CLI: the CT head at full-resolution tets against a committed baseline (PSNR >= 40 dB, SSIM >=
+# 0.98: thread scheduling cannot change the image, so only compiler/libm differences remain).
+art_render_baseline_test(cli.render_tets_ct_head BASELINE tets-ct-head-160.png MIN_PSNR 40 MIN_SSIM 0.98
+  ARGS "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" --size 160x160 --azimuth 30 --elevation 10 --no-error)
+art_expect_test(cli.render_tets_bad_integrator EXIT 2 STDERR "--integrator expects exact or trapezoid" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --integrator simpson)
+# --clip cuts the mesh's rays and the voxel reference's alike (26.6 dB on this cutaway of two planes; 23.3 dB with one, 10.9 dB
+# with the reference left whole); a plane past the head leaves nothing; a bad plane is refused.
+art_expect_test(cli.render_tets_clip EXIT 0 STDOUT "error        PSNR 2[5-7]\\.[0-9]+ dB"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/clip.png" --size 64x64 --tets 3000 --plain-reduction
+  --no-relocate "--clip=122,122,80,-1,0,0;0,0,60,0,0,1")
+art_expect_test(cli.render_tets_clip_all EXIT 0 STDOUT "ERT 0.99: .* 0.0 tets/ray"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/clip-all.png" --size 32x32 --tets 500 --plain-reduction
+  --clip 0,0,1000,0,0,1 --no-error)
+art_expect_test(cli.render_tets_clip_bad EXIT 2 STDERR "--clip expects X,Y,Z,NX,NY,NZ \\(a point and a non-zero normal\\)" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --clip 1,2,3,0,0,0)
+# A mesh whose tets keep their own points (as some exporters write them) renders as the same mesh
+# with shared points: the preset's unit distance counts the merged points (20.5 dB apart before).
+art_render_baseline_test(cli.render_tets_own_points BASELINE tets-box-shared-points.png MIN_PSNR 40 MIN_SSIM 0.98
+  ARGS "${CMAKE_SOURCE_DIR}/tests/data/duplicates/box-own-points.vtu" --size 48x48 --azimuth 30 --elevation 20 --no-error)
+art_expect_test(cli.render_tets_mesh_vector_magnitude EXIT 0 STDOUT "render .*tets/ray"
+  ARGS render "${_vec}" -o "${_tmp}/vec.png" --size 32x32 --array velocity:magnitude --no-error)
+art_expect_test(cli.render_tets_mesh_vector_whole EXIT 1 ONE_LINE_STDERR
+  STDERR "point array 'velocity' has 3 components; rendering needs one \\(choose with --array velocity:magnitude or velocity:0 \\.\\. velocity:2, or another array\\)"
+  ARGS render "${_vec}" -o "${_tmp}/vec.png" --size 32x32 --array velocity)
+# --tets and --max-error take percentages as in `reduce`: 1% of the 884,736 voxels is 8,847 tets.
+art_expect_test(cli.render_tets_percent_budget EXIT 0 STDOUT "least-squares reduction.*: 88[0-9][0-9] tets"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/pct.png" --size 32x32 --tets 1% --plain-reduction --no-error)
+# A transfer function for other data draws nothing: a note says so (exit 0, the image is written).
+art_expect_test(cli.render_tets_tf_outside_range EXIT 0
+  STDOUT "note         the transfer function is transparent over the data's range -1024 .. 2697 \\(its control points span 5000 .. 6000\\)"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/far.png" --size 16x16 --tets 500 --plain-reduction
+  --no-error --tf "${_tetdata}/far-tf.txt")
+# Opacity per too long a unit distance leaves the image all but clear: a note says so.
+art_expect_test(cli.render_tets_all_but_clear EXIT 0
+  STDOUT "note         the image is all but clear \\(opacity at most 0\\.000[0-9]+\\): the transfer function's opacity applies per 100000 world units"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/clear.png" --size 32x32 --tets 500 --plain-reduction
+  --unit-distance 100000)
+# Reductions relocate by default, but not under iso-surfaces (where the lattice measured better)
+# unless asked for.
+art_expect_test(cli.render_tets_iso_keeps_lattice EXIT 0 STDOUT "mesh +adaptive tets \\(opacity-weighted least-squares reduction, RMS"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/iso-lattice.png" --size 16x16 --tets 300 --iso 300 --no-error)
+art_expect_test(cli.render_tets_iso_relocate EXIT 0 STDOUT "mesh +adaptive tets \\(opacity-weighted least-squares reduction, vertices relocated"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/iso-reloc.png" --size 16x16 --tets 300 --iso 300 --relocate --no-error)
+art_expect_test(cli.render_tets_relocates_by_default EXIT 0 STDOUT "mesh +adaptive tets \\(opacity-weighted least-squares reduction, vertices relocated"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/reloc-default.png" --size 16x16 --tets 300 --no-error)
+art_expect_test(cli.render_tets_relocate EXIT 0 STDOUT "least-squares reduction, vertices relocated, RMS error"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/reloc.png" --size 16x16 --tets 100 --plain-reduction
+  --relocate --no-error)
+art_expect_test(cli.render_tets_bad_ert EXIT 2 STDERR "--ert expects an opacity in \\(0, 1\\], got '2'" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --ert 2)
+art_expect_test(cli.render_option_of_another_kind EXIT 2 STDERR "--tets does not apply to a surface" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/am_underworks.ply" -o "${_tmp}/x.png" --tets 1000)
+art_expect_test(cli.render_bad_zoom EXIT 2 STDERR "--zoom expects a positive factor, got '0'" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --zoom 0)
+art_expect_test(cli.bad_threads EXIT 2 STDERR "--threads expects 0 \\(all cores\\) or a count up to 4096, got '-3'"
+  ONE_LINE_STDERR ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --threads -3)
+art_expect_test(cli.render_tets_bad_unit_distance EXIT 2 STDERR "--unit-distance expects a positive length, got '-1'"
+  ONE_LINE_STDERR ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --unit-distance -1)
+art_expect_test(cli.render_tets_edge_refinement EXIT 0 STDOUT "least-squares reduction.*: 30[0-9][0-9] tets"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/edge.png" --size 32x32 --tets 3000 --refinement edge --no-error)
+# Maximum intensity reduces with the values clamped to the voxels' range (no bright overshoot).
+art_expect_test(cli.render_tets_mip_clamped EXIT 0 STDOUT "reduction, vertices relocated, clamped to the voxel range.*: 30[0-9][0-9] tets"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/mip.png" --size 32x32 --tets 3000 --mip --no-error)
+# A ParaView preset (its "Export" JSON: diverging colours, opacity points) as --tf.
+art_expect_test(cli.render_tets_paraview_preset EXIT 0 STDOUT "output .*pv.png"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/pv.png" --size 32x32 --tets 3000 --no-error
+  --tf "${_tetdata}/paraview-preset.json")
+# Parallel pieces and multiblock files (tests/data/pieces, made by make_pieces.py) read as the one
+# mesh: 320 tets, 125 vertices once the points repeated at piece boundaries are merged.
+foreach(_f pieces.pvtu blocks.vtm)
+  art_expect_test(cli.render_mesh_${_f} EXIT 0 STDOUT "tet mesh: 320 tets, 125 vertices"
+    ARGS render "${CMAKE_SOURCE_DIR}/tests/data/pieces/${_f}" -o "${_tmp}/${_f}.png" --size 32x32 --no-error)
+endforeach()
+art_expect_test(cli.render_mesh_empty_vtm EXIT 1 STDERR "empty.vtm: holds no data sets in its blocks" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/tests/data/pieces/empty.vtm" -o "${_tmp}/x.png" --size 32x32)
+art_expect_test(cli.render_tets_bad_refinement EXIT 2 STDERR "--refinement is bisection or edge, got 'red-green'" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --tets 3000 --refinement red-green)
+art_expect_test(cli.render_tets_iso_nan EXIT 2 STDERR "--iso expects numbers separated by commas, got 'nan'"
+  ONE_LINE_STDERR ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --iso nan)
+art_expect_test(cli.render_tets_unknown_preset EXIT 1 STDERR "unknown transfer-function preset 'rainbow'" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --tf rainbow)
+# Control points 1e-310 apart gave Locate's table an infinite scale: a crash (SIGSEGV) on a mesh.
+art_expect_test(cli.render_tf_denormal_span EXIT 1 ONE_LINE_STDERR
+  STDERR "denormal-span-tf.txt: transfer function's control points span 0 .. 1e-310, too close together"
+  ARGS render "${_tetdata}/two-tets.vtu" -o "${_tmp}/x.png" --tf "${_tetdata}/denormal-span-tf.txt")
+art_expect_test(cli.render_tets_bad_tf_file EXIT 1 STDERR "bad-tf.txt: line 1: expected 'scalar r g b opacity'" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --tf "${_tetdata}/bad-tf.txt")
+art_expect_test(cli.render_tets_mesh_without_scalars EXIT 1 STDERR "no-scalars.vtu: mesh has no point or cell scalars" ONE_LINE_STDERR
+  ARGS render "${_tetdata}/no-scalars.vtu" -o "${_tmp}/x.png")
+# Iso-surfaces get error figures too: the voxel reference composites them (PSNR of 2 digits or more).
+art_expect_test(cli.render_tets_iso_error EXIT 0 STDOUT "error +PSNR [1-9][0-9]\\.[0-9]+ dB"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/iso.png" --size 96x80 --tets 20000 --iso 300)
+art_expect_test(cli.render_tets_mesh EXIT 0 STDOUT "tet mesh: 2 tets, 5 vertices.*output"
+  ARGS render "${_tetdata}/two-tets.vtu" -o "${_tmp}/two-tets.png" --size 64x48 --tf grey-ramp)
+# The surface tracer on the embedded am_underworks level, from inside it, opaque with shadows and
+# transparent (all-hits attenuation), against committed baselines. Threshold: PSNR >= 40 dB and
+# SSIM >= 0.98 (renders are deterministic; the slack covers other compilers' maths).
+set(_art_cam --camera-position 640,640,-545 --focal-point 1500,640,-600 --view-angle 70 --size 200x150)
+art_render_baseline_test(image.surface_underworks_opaque BASELINE surface-underworks-opaque.png
+  MIN_PSNR 40 MIN_SSIM 0.98 ARGS "${CMAKE_SOURCE_DIR}/data/am_underworks.ply" ${_art_cam})
+art_render_baseline_test(image.surface_underworks_transparent BASELINE surface-underworks-transparent.png
+  MIN_PSNR 40 MIN_SSIM 0.98 ARGS "${CMAKE_SOURCE_DIR}/data/am_underworks.ply" ${_art_cam} --opacity 0.4)
+# A scene 2.5e7 units from the origin (survey coordinates; tests/data/far-sphere.vtk, double
+# points) renders like the same sphere at the origin (the baseline): the store traces in float.
+art_render_baseline_test(image.surface_far_from_origin BASELINE surface-far-sphere.png
+  MIN_PSNR 40 MIN_SSIM 0.98 ARGS "${CMAKE_SOURCE_DIR}/tests/data/far-sphere.vtk" --size 96x96)
+# Bad options to the surface renderer: one line, exit 2.
+art_expect_test(cli.render_surface_bad_opacity EXIT 2 STDERR "--opacity expects a value in" ONE_LINE_STDERR
+  ARGS render "${CMAKE_SOURCE_DIR}/data/am_underworks.ply" -o "${ART_TEST_OUTPUT}/bad.png" --opacity 2)
+add_test(NAME render.mesh_cache COMMAND bash "${CMAKE_CURRENT_LIST_DIR}/mesh_cache_check.sh"
+  "$<TARGET_FILE:adaptivert>" "${CMAKE_SOURCE_DIR}" "${ART_TEST_OUTPUT}/mesh-cache")
+set_tests_properties(render.mesh_cache PROPERTIES LABELS "unit" TIMEOUT 300)
+# Work too large for the memory available is refused up front (memory_refusal_check.sh: a sparse
+# volume, an 8 GB address-space cap, exit 1, the message, nothing written).
+# render: full-resolution tets of 450^3 voxels (453 million, ~72 GB; under TetMesh's 2^29 limit, so
+# TetMesh::CheckFullResolutionFits is what refuses; 91 MB read).
+set(_w "${ART_TEST_OUTPUT}/full-tets-memory")
+add_test(NAME render.full_tets_memory COMMAND bash "${_mem}" "${_w}" "450 450 450" MET_UCHAR 91125000
+  "big.mhd: full-resolution tets of this volume (452594245) need about 72.4 GB, more than the .* GB of memory available; reduce it first (--tets N"
+  "${_w}/big.png" -- "$<TARGET_FILE:adaptivert>" render "${_w}/big.mhd" -o "${_w}/big.png" --size 32x32)
+set_tests_properties(render.full_tets_memory PROPERTIES LABELS "unit" TIMEOUT 120)
