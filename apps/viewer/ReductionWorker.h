@@ -35,8 +35,8 @@ public:
   /// reducer's other settings (their TargetTets and Levels are the budgets').
   ReductionWorker(art::VoxelVolume volume, std::vector<long long> budgets, art::ReducerOptions options = {});
   /// The settings `adaptivert render` reduces with for a transfer function (composite, no
-  /// iso-surface): the fit weighted by its opacity, then the vertices relocated. The images are
-  /// 2-6 dB closer to the voxels' than a plain lattice fit at the same tets, for 4-5x the time.
+  /// iso-surface): the fit weighted by its opacity, then the vertices relocated (closer to the
+  /// voxels' picture than the plain lattice fit at the same tets, for several times the time).
   static art::ReducerOptions ShowingWith(const art::TransferFunction& tf);
   /// Cancels a running reduction and waits for the thread.
   ~ReductionWorker();

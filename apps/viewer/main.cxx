@@ -40,8 +40,7 @@ int main(int argc, char** argv)
     if (!opt.Screenshot.empty())
     {
       // A --screenshot that cannot be written (its folder missing or read-only) is said before
-      // the window opens: it was said at the end, after the whole reduction (1 m 46 s for the
-      // 128 CT). The probe's temporary file is removed as it goes.
+      // the window opens, not after the whole reduction. The trial file is removed as it goes.
       art::AtomicFile probe(opt.Screenshot);
     }
     view::ViewerApp app(opt);

@@ -1,5 +1,5 @@
 // Counters: per-query work counts. Counting work, not only seconds, gives figures that repeat on
-// a noisy machine (DESIGN.md, "Measure the work"). Each thread keeps its own and they are summed.
+// a noisy machine (docs/benchmarks.md). Each thread keeps its own and they are summed.
 #ifndef art_Counters_h
 #define art_Counters_h
 

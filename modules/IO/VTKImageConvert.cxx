@@ -27,8 +27,8 @@ Image FromVTKImage(vtkImageData* img)
     throw Error("expected 1 to 4 components, got " + std::to_string(nc));
   }
   // Integers are fractions of their type's largest value, as ReadImage takes a file's: a 16-bit
-  // image (vtkPNGReader's of a 16-bit PNG) was read as values up to 65535 (PSNR -90 dB against
-  // the same picture in 8 bits). Floating-point values are taken as they are.
+  // image (vtkPNGReader's of a 16-bit PNG) compares with the same picture in 8 bits.
+  // Floating-point values are taken as they are.
   const int type = s->GetDataType();
   const double scale = type == VTK_FLOAT || type == VTK_DOUBLE ? 1.0 : 1.0 / s->GetDataTypeMax();
   Image out(dims[0], dims[1], { 0.f, 0.f, 0.f, 1.f });

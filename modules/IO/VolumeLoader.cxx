@@ -202,8 +202,8 @@ void ApplyDicomGeometry(vtkImageData* img, vtkDICOMImageReader* r)
 }
 
 // VTK's XML and legacy readers keep a negative spacing (a flipped axis, as some tools write one),
-// which the voxel reference took as positive: it rendered the volume mirrored against the reduced
-// mesh (8 dB apart). The sign moves into the direction matrix, placing every voxel where it was.
+// which the voxel reference would take as positive, mirroring the volume against the reduced
+// mesh. The sign moves into the direction matrix, placing every voxel where it was.
 // A zero or non-finite spacing along an axis of several voxels puts them all in one plane.
 void MakeSpacingPositive(vtkImageData* img, const std::string& path)
 {

@@ -17,7 +17,7 @@ art_expect_test(cli.batch_json_escapes_paths EXIT 0 STDOUT "\"csv\":\"[^\"]*/out
   ARGS batch "${CMAKE_CURRENT_BINARY_DIR}/quote-job/job.json" --json --quiet)
 # A setting with its own transfer function is scored against the reference's picture: the batch
 # says so once per such setting before it renders (setting 0 differs only in how it approximates:
-# no note, hence one line); frames with their own tf scored 14-18 dB without a word (probe11).
+# no note, hence one line); frames with their own tf scored 14-18 dB without a word.
 file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/look-job/job.json"
   "{\"output\": \"out\", \"datasets\": [\"${CMAKE_SOURCE_DIR}/data/ct-head-128.mha\"], \"size\": \"16x16\",\n"
   " \"settings\": [{\"tets\": 300, \"integrator\": \"trapezoid\"}, {\"tets\": 300, \"tf\": \"ct-bone\"}],\n"

@@ -69,7 +69,7 @@ art_expect_test(cli.reduce_budget_out_of_range EXIT 2 STDERR "--tets '1e300' is 
   ARGS reduce "${_ct}" "${_out}/x.vtu" --tets 1e300)
 art_expect_test(cli.reduce_bad_output EXIT 2 STDERR "output must be a .vtu" ONE_LINE_STDERR
   ARGS reduce "${_ct}" "${_out}/x.png" --tets 100)
-# The extension in any case, as the mesh writer takes it (OUT.VTU was a usage error; probe12).
+# The extension in any case, as the mesh writer takes it (OUT.VTU was a usage error).
 art_expect_test(cli.reduce_upper_case_vtu EXIT 0 STDOUT "output +[^ ]*/UPPER.VTU: "
   ARGS reduce "${_ct}" "${_out}/UPPER.VTU" --tets 100)
 art_expect_test(cli.reduce_missing_file EXIT 1 STDERR "nonexistent.mha: no such file" ONE_LINE_STDERR

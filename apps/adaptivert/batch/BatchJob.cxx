@@ -53,8 +53,7 @@ std::string SettingValue(const std::string& key, const json& value, const fs::pa
 }
 
 // Options that change what the picture shows, not how closely it is approximated: a setting
-// that sets one of them otherwise than the reference is scored against another picture (frames
-// with their own transfer function scored 14-18 dB; probe11).
+// that sets one of them otherwise than the reference is scored against another picture.
 std::vector<std::string> LookNotes(const json& settings, const json& reference)
 {
   static const std::set<std::string> approximation = { "tets", "max-error", "refinement", "relocate", "no-relocate",

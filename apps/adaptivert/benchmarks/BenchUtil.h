@@ -1,5 +1,5 @@
 // BenchUtil: what every benchmark target shares: medians with their min-max over timed runs
-// after a warm-up (CONVENTIONS.md, Benchmarks), and the machine and commit a result belongs to.
+// after a warm-up (docs/benchmarks.md), and the machine and commit a result belongs to.
 #ifndef adaptivert_BenchUtil_h
 #define adaptivert_BenchUtil_h
 

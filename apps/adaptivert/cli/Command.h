@@ -34,7 +34,7 @@ struct Registrar
   explicit Registrar(Command c) { Registry().push_back(std::move(c)); }
 };
 
-/// Exit codes, documented in the README.
+/// Exit codes, documented in docs/cli.md.
 enum ExitCode
 {
   ExitOk = 0,

@@ -252,7 +252,8 @@ int Run(const cli::Options& o, const std::string& input)
           }
         }
         // Not by default under iso-surfaces: on the CT's head rest (thin struts) the relocated fit
-        // crosses 300 HU in blobs where the voxels have thin lines, 1-3 dB below the lattice.
+        // crosses an iso-value in blobs where the voxels have thin lines (a worse picture than the
+        // lattice's).
         ro.RelocateVertices = o.Flag("relocate") || (!o.Flag("no-relocate") && settings.isos.empty());
         // Maximum intensity shows the fit's overshoot at sharp edges as bright facets.
         ro.ClampToVoxels = settings.mode == art::RenderSettings::Mode::MaxIntensity;

@@ -127,7 +127,7 @@ TEST(ViewerControls, SettingsKeys)
   ApplyKey(s, '-', 1);
   EXPECT_DOUBLE_EQ(s.IsoValue, 110);
   EXPECT_TRUE(s.Iso); // changing the value shows the surface
-  // + and - stop at the data's range (probe14: 'on at 3069.1' over data up to 2697, nothing drawn).
+  // + and - stop at the data's range ('on at 3069.1' over data up to 2697, nothing drawn).
   s.IsoLo = 95;
   s.IsoHi = 125;
   for (int i = 0; i < 5; ++i)
@@ -176,7 +176,7 @@ TEST(ViewerControls, SettingsKeys)
   EXPECT_EQ(ApplyKey(s, 'w', 1), KeyResult::Ignored); // VTK's wireframe key does nothing here
 }
 
-// The progress line said "reduced: 1 levels from one run" for one --tets level (probe14).
+// The progress line said "reduced: 1 levels from one run" for one --tets level.
 TEST(ViewerControls, ReducedTextCountsLevels)
 {
   EXPECT_EQ(ReducedText(1), "reduced: 1 level from one run");
@@ -246,7 +246,7 @@ TEST(ViewerScript, MalformedLinesNameFileAndLine)
     }
   }
   EXPECT_THROW(ReadScript(std::string(ART_TEST_OUTPUT) + "/no-such.script"), art::Error);
-  // A folder opened as an empty script: nothing ran and nothing was said (probe14).
+  // A folder opened as an empty script: nothing ran and nothing was said.
   EXPECT_THROW(ReadScript(ART_TEST_OUTPUT), art::Error);
 }
 

@@ -75,7 +75,7 @@ TEST(Camera, FrameShowsTheWholeBox)
 }
 
 // A portrait image fits the narrower horizontal angle: framed by the vertical one alone, the box's
-// sides fell outside a 40 x 100 image (probe14: the CT head cut off in a tall viewer window).
+// sides fell outside a 40 x 100 image (the CT head cut off in a tall viewer window).
 // Landscape and square images are framed as before. Checked by projecting every box corner.
 TEST(Camera, FrameFitsPortraitImages)
 {
