@@ -57,29 +57,38 @@ art::Vec3 ParseVec(const std::string& s, const char* what)
   return v;
 }
 
-int Run(const cli::Options& o, const std::string& input)
+// The scene's triangles, its colours on the points. A scene far from the origin is traced about
+// its centre (TriangleStore::OriginFor): the camera and lights given on the command line move
+// with it, by `shift`.
+struct SurfaceScene
 {
-  const cli::View view = cli::ViewFromOptions(o);
-  cli::ProgressBar bar(o.Flag("quiet"));
-  art::Progress progress(bar.Callback());
+  vtkSmartPointer<vtkPolyData> pd;
+  std::shared_ptr<art::TriangleStore> store;
+  art::Vec3 shift;
+};
 
-  auto t0 = std::chrono::steady_clock::now();
+SurfaceScene LoadScene(const std::string& input)
+{
+  SurfaceScene sc;
   // Face colours move onto corners of each face's own (SurfaceColours.h).
-  vtkSmartPointer<vtkPolyData> pd = art::WithColoursOnPoints(art::LoadSurface(input));
-  // A scene far from the origin is traced about its centre (TriangleStore::OriginFor): the camera
-  // and lights given on the command line move with it.
+  sc.pd = art::WithColoursOnPoints(art::LoadSurface(input));
   double pb[6];
-  pd->GetBounds(pb);
-  const art::Vec3 shift = art::TriangleStore::OriginFor(art::Box3::FromBounds(pb));
-  auto store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(pd, shift));
-  if (store->Size() == 0)
+  sc.pd->GetBounds(pb);
+  sc.shift = art::TriangleStore::OriginFor(art::Box3::FromBounds(pb));
+  sc.store = std::make_shared<art::TriangleStore>(art::TriangleStore::FromPolyData(sc.pd, sc.shift));
+  if (sc.store->Size() == 0)
   {
     // LoadSurface found polygons, so every one was dropped as degenerate: say so.
     throw art::Error("has no triangles to render: all " +
-        std::to_string(pd->GetNumberOfPolys() + pd->GetNumberOfStrips()) +
+        std::to_string(sc.pd->GetNumberOfPolys() + sc.pd->GetNumberOfStrips()) +
         " polygons have zero area or non-finite points (float coordinates far from the origin lose small detail)",
       input);
   }
+  return sc;
+}
+
+std::unique_ptr<art::Accelerator> BuildAccelerator(const cli::Options& o, const SurfaceScene& sc)
+{
   art::AcceleratorOptions ao;
   try
   {
@@ -97,11 +106,13 @@ int Run(const cli::Options& o, const std::string& input)
   {
     throw cli::UsageError("--threshold, --subdivisions (<= 16) and --plane-weight expect counts >= 0");
   }
-  const auto acc = art::MakeAccelerator(store, ao);
-  const double buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return art::MakeAccelerator(sc.store, ao);
+}
 
-  const art::Box3 bounds = store->Bounds();
-  vtkNew<vtkCamera> vcam;
+// The scene framed as any render frames it, or placed with --camera-position / --focal-point
+// (z up, as game levels and terrains have it).
+void SetupSurfaceCamera(const cli::Options& o, const art::Box3& bounds, const art::Vec3& shift, vtkCamera* vcam)
+{
   const double angle = o.GetDouble("view-angle");
   if (!(angle > 0 && angle < 180))
   {
@@ -110,31 +121,34 @@ int Run(const cli::Options& o, const std::string& input)
   // The angle is set before framing, which zooms by narrowing it (setting it after undid --zoom).
   vcam->SetViewAngle(angle);
   cli::SetupCamera(o, bounds, vcam);
-  if (o.Has("camera-position"))
+  if (!o.Has("camera-position"))
   {
-    vcam->SetViewAngle(angle); // zoomed once below, not twice
-    vcam->SetParallelScale(std::max(0.5 * bounds.Diagonal(), 1e-12));
-    const art::Vec3 p = ParseVec(o.Get("camera-position"), "--camera-position") - shift;
-    const art::Vec3 f = o.Has("focal-point") ? ParseVec(o.Get("focal-point"), "--focal-point") - shift : bounds.Center();
-    if (p == f)
-    {
-      throw cli::UsageError("--camera-position and --focal-point must differ");
-    }
-    vcam->SetPosition(p.x, p.y, p.z);
-    vcam->SetFocalPoint(f.x, f.y, f.z);
-    // z is up, except when looking straight along z (a floor plan from above): a view-up parallel
-    // to the view direction leaves no 'right', and every ray came out NaN (one flat colour).
-    const art::Vec3 dir = art::Normalize(f - p);
-    const bool alongZ = std::abs(dir.z) > 0.999;
-    vcam->SetViewUp(0, alongZ ? (dir.z < 0 ? 1 : -1) : 0, alongZ ? 0 : 1);
-    vcam->OrthogonalizeViewUp();
-    vcam->Azimuth(o.GetDouble("azimuth"));
-    vcam->Elevation(o.GetDouble("elevation"));
-    vcam->OrthogonalizeViewUp();
-    vcam->Zoom(o.GetDouble("zoom"));
+    return;
   }
-  const art::Camera cam = art::Camera::FromVTK(vcam, view.width, view.height);
+  vcam->SetViewAngle(angle); // zoomed once below, not twice
+  vcam->SetParallelScale(std::max(0.5 * bounds.Diagonal(), 1e-12));
+  const art::Vec3 p = ParseVec(o.Get("camera-position"), "--camera-position") - shift;
+  const art::Vec3 f = o.Has("focal-point") ? ParseVec(o.Get("focal-point"), "--focal-point") - shift : bounds.Center();
+  if (p == f)
+  {
+    throw cli::UsageError("--camera-position and --focal-point must differ");
+  }
+  vcam->SetPosition(p.x, p.y, p.z);
+  vcam->SetFocalPoint(f.x, f.y, f.z);
+  // z is up, except when looking straight along z (a floor plan from above): a view-up parallel
+  // to the view direction leaves no 'right', and every ray came out NaN (one flat colour).
+  const art::Vec3 dir = art::Normalize(f - p);
+  const bool alongZ = std::abs(dir.z) > 0.999;
+  vcam->SetViewUp(0, alongZ ? (dir.z < 0 ? 1 : -1) : 0, alongZ ? 0 : 1);
+  vcam->OrthogonalizeViewUp();
+  vcam->Azimuth(o.GetDouble("azimuth"));
+  vcam->Elevation(o.GetDouble("elevation"));
+  vcam->OrthogonalizeViewUp();
+  vcam->Zoom(o.GetDouble("zoom"));
+}
 
+art::SurfaceTracerSettings TracerSettings(const cli::Options& o, vtkCamera* vcam, const art::Vec3& shift)
+{
   art::SurfaceTracerSettings s;
   s.opacity = o.GetDouble("opacity");
   if (!(s.opacity > 0 && s.opacity <= 1))
@@ -145,96 +159,138 @@ int Run(const cli::Options& o, const std::string& input)
   s.smooth = !o.Flag("flat");
   const art::Vec3 col = ParseVec(o.Get("color"), "--color");
   s.color = { { float(col.x), float(col.y), float(col.z) } };
-  if (o.Has("lights"))
-  {
-    std::stringstream ss(o.Get("lights"));
-    std::string item;
-    while (std::getline(ss, item, ';'))
-    {
-      s.lights.push_back({ ParseVec(item, "--lights") - shift, 0.0 });
-    }
-    for (auto& l : s.lights)
-    {
-      l.intensity = 0.85 / double(s.lights.size());
-    }
-  }
-  else
+  if (!o.Has("lights"))
   {
     // A headlight, and a key light above and to the left of the camera, which casts shadows.
     s.lights = art::HeadAndKeyLights(
       art::Vec3(vcam->GetPosition()), art::Vec3(vcam->GetFocalPoint()), art::Vec3(vcam->GetViewUp()));
+    return s;
   }
-  std::vector<std::array<float, 3>> colors = art::PointColours(pd);
+  std::stringstream ss(o.Get("lights"));
+  std::string item;
+  while (std::getline(ss, item, ';'))
+  {
+    s.lights.push_back({ ParseVec(item, "--lights") - shift, 0.0 });
+  }
+  for (auto& l : s.lights)
+  {
+    l.intensity = 0.85 / double(s.lights.size());
+  }
+  return s;
+}
+
+long long CoveredPixels(const art::Image& img)
+{
+  long long covered = 0;
+  for (std::size_t i = 3; i < img.Pixels().size(); i += 4)
+  {
+    covered += img.Pixels()[i] > 0.f;
+  }
+  return covered;
+}
+
+// An image of background only exits 0 like any other: say why when we can. A flat scene (a
+// floor plan, a terrain tile in z = 0) is seen face on by default (Camera::DefaultView), edge
+// on when --azimuth or --elevation turn it so.
+std::string NothingInViewNote(const art::Box3& bounds, const art::Camera& cam)
+{
+  // Flat along an axis that the view direction is square to: every ray runs beside the plane.
+  const art::Vec3 e = bounds.hi - bounds.lo, f = Normalize(cam.Forward());
+  const double ext[3] = { e.x, e.y, e.z }, dir[3] = { f.x, f.y, f.z };
+  int flat = -1;
+  for (int a = 0; a < 3; ++a)
+  {
+    flat = (ext[a] <= 1e-6 * Length(e) && std::abs(dir[a]) < 1e-6) ? a : flat;
+  }
+  return flat >= 0 ? std::string("no surface is in view: the scene is flat in ") + "xyz"[flat] +
+      " and seen edge-on (the default view, without --azimuth and --elevation, looks at it face on)"
+                   : std::string("no surface is in view (the image is background only)");
+}
+
+struct TraceResult
+{
+  art::Counters c;
+  double buildSeconds = 0, seconds = 0, mb = 0;
+  long long covered = 0;
+  std::string note, accelerator;
+};
+
+void PrintResult(const cli::Options& o, const std::string& input, const cli::View& view, const SurfaceScene& sc,
+  const art::SurfaceTracerSettings& s, const TraceResult& r)
+{
+  const double mrays = double(r.c.rays) / std::max(r.seconds, 1e-9) / 1e6;
+  if (o.Flag("json"))
+  {
+    cli::Json j;
+    j.Set("input", input).Set("output", view.output).Set("width", view.width).Set("height", view.height);
+    j.Set("accelerator", r.accelerator).Set("triangles", static_cast<long long>(sc.store->Size()));
+    j.Set("build_seconds", r.buildSeconds).Set("render_seconds", r.seconds).Set("rays", static_cast<long long>(r.c.rays));
+    j.Set("mrays_per_second", mrays).Set("memory_mb", r.mb).Set("threads", art::GetThreadCount());
+    j.Set("voxels_per_ray", r.c.PerRay(r.c.voxelsVisited)).Set("triangles_per_ray", r.c.PerRay(r.c.trianglesTested));
+    j.Set("lights", static_cast<long long>(s.lights.size())).Set("opacity", s.opacity);
+    j.Set("covered_pixels", r.covered);
+    if (!r.note.empty())
+    {
+      j.Set("note", r.note);
+    }
+    std::printf("%s\n", j.Str().c_str());
+    return;
+  }
+  std::printf("input        %s: %zu triangles\n", input.c_str(), sc.store->Size());
+  std::printf("accelerator  %s: built in %.1f ms, %.1f MB (%.0f bytes/triangle with the store)\n",
+    r.accelerator.c_str(), r.buildSeconds * 1e3, r.mb, r.mb * 1e6 / double(sc.store->Size()));
+  std::printf("render       %d x %d, %zu lights%s, opacity %g: %.3f s, %llu rays (%.2f Mrays/s on %d threads)\n",
+    view.width, view.height, s.lights.size(), s.shadows ? " with shadows" : "", s.opacity, r.seconds,
+    static_cast<unsigned long long>(r.c.rays), mrays, art::GetThreadCount());
+  std::printf("work         %.1f voxels visited, %.1f triangles tested per ray\n", r.c.PerRay(r.c.voxelsVisited),
+    r.c.PerRay(r.c.trianglesTested));
+  if (!r.note.empty())
+  {
+    std::printf("note         %s\n", r.note.c_str());
+  }
+  std::printf("output       %s\n", view.output.c_str());
+}
+
+int Run(const cli::Options& o, const std::string& input)
+{
+  const cli::View view = cli::ViewFromOptions(o);
+  cli::ProgressBar bar(o.Flag("quiet"));
+  art::Progress progress(bar.Callback());
+  TraceResult r;
+
+  auto t0 = std::chrono::steady_clock::now();
+  const SurfaceScene sc = LoadScene(input);
+  const auto acc = BuildAccelerator(o, sc);
+  r.buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.accelerator = acc->Name();
+  r.mb = double(acc->MemoryBytes() + sc.store->MemoryBytes()) / 1e6;
+
+  const art::Box3 bounds = sc.store->Bounds();
+  vtkNew<vtkCamera> vcam;
+  SetupSurfaceCamera(o, bounds, sc.shift, vcam);
+  const art::Camera cam = art::Camera::FromVTK(vcam, view.width, view.height);
+  const art::SurfaceTracerSettings s = TracerSettings(o, vcam, sc.shift);
+
+  std::vector<std::array<float, 3>> colors = art::PointColours(sc.pd);
   art::SurfaceTracer tracer(*acc, s);
   if (!colors.empty())
   {
     tracer.SetPointColors(std::move(colors));
   }
   progress.Begin("tracing", double(view.width) * view.height);
-  art::Counters c;
   t0 = std::chrono::steady_clock::now();
-  art::Image img = tracer.Render(cam, &progress, &c);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  art::Image img = tracer.Render(cam, &progress, &r.c);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   progress.End();
   bar.Finish();
-  // An image of background only exits 0 like any other: say why when we can. A flat scene (a
-  // floor plan, a terrain tile in z = 0) is seen face on by default (Camera::DefaultView), edge
-  // on when --azimuth or --elevation turn it so.
-  long long covered = 0;
-  for (std::size_t i = 3; i < img.Pixels().size(); i += 4)
+  r.covered = CoveredPixels(img);
+  if (r.covered == 0)
   {
-    covered += img.Pixels()[i] > 0.f;
-  }
-  std::string note;
-  if (covered == 0)
-  {
-    // Flat along an axis that the view direction is square to: every ray runs beside the plane.
-    const art::Vec3 e = bounds.hi - bounds.lo, f = Normalize(cam.Forward());
-    const double ext[3] = { e.x, e.y, e.z }, dir[3] = { f.x, f.y, f.z };
-    int flat = -1;
-    for (int a = 0; a < 3; ++a)
-    {
-      flat = (ext[a] <= 1e-6 * Length(e) && std::abs(dir[a]) < 1e-6) ? a : flat;
-    }
-    note = flat >= 0 ? std::string("no surface is in view: the scene is flat in ") + "xyz"[flat] +
-        " and seen edge-on (the default view, without --azimuth and --elevation, looks at it face on)"
-                     : std::string("no surface is in view (the image is background only)");
+    r.note = NothingInViewNote(bounds, cam);
   }
   img.CompositeOver({ view.background[0], view.background[1], view.background[2] });
   art::WriteImage(img, view.output);
-
-  const double mrays = double(c.rays) / std::max(seconds, 1e-9) / 1e6;
-  const double mb = double(acc->MemoryBytes() + store->MemoryBytes()) / 1e6;
-  if (o.Flag("json"))
-  {
-    cli::Json j;
-    j.Set("input", input).Set("output", view.output).Set("width", view.width).Set("height", view.height);
-    j.Set("accelerator", acc->Name()).Set("triangles", static_cast<long long>(store->Size()));
-    j.Set("build_seconds", buildSeconds).Set("render_seconds", seconds).Set("rays", static_cast<long long>(c.rays));
-    j.Set("mrays_per_second", mrays).Set("memory_mb", mb).Set("threads", art::GetThreadCount());
-    j.Set("voxels_per_ray", c.PerRay(c.voxelsVisited)).Set("triangles_per_ray", c.PerRay(c.trianglesTested));
-    j.Set("lights", static_cast<long long>(s.lights.size())).Set("opacity", s.opacity);
-    j.Set("covered_pixels", covered);
-    if (!note.empty())
-    {
-      j.Set("note", note);
-    }
-    std::printf("%s\n", j.Str().c_str());
-    return cli::ExitOk;
-  }
-  std::printf("input        %s: %zu triangles\n", input.c_str(), store->Size());
-  std::printf("accelerator  %s: built in %.1f ms, %.1f MB (%.0f bytes/triangle with the store)\n", acc->Name().c_str(),
-    buildSeconds * 1e3, mb, mb * 1e6 / double(store->Size()));
-  std::printf("render       %d x %d, %zu lights%s, opacity %g: %.3f s, %llu rays (%.2f Mrays/s on %d threads)\n",
-    view.width, view.height, s.lights.size(), s.shadows ? " with shadows" : "", s.opacity, seconds,
-    static_cast<unsigned long long>(c.rays), mrays, art::GetThreadCount());
-  std::printf("work         %.1f voxels visited, %.1f triangles tested per ray\n", c.PerRay(c.voxelsVisited),
-    c.PerRay(c.trianglesTested));
-  if (!note.empty())
-  {
-    std::printf("note         %s\n", note.c_str());
-  }
-  std::printf("output       %s\n", view.output.c_str());
+  PrintResult(o, input, view, sc, s, r);
   return cli::ExitOk;
 }
 

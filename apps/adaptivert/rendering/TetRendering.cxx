@@ -195,288 +195,363 @@ art::RenderSettings MakeSettings(const cli::Options& o, art::TransferFunction tf
   return s;
 }
 
+// What `render` casts: a volume's tets (full resolution or reduced) or a mesh's, its transfer
+// function and the notes gathered on the way.
+struct Scene
+{
+  vtkSmartPointer<vtkImageData> volume; ///< null for a mesh input
+  art::TetMesh mesh;
+  std::string meshLabel, note;
+  double range[2] = { 0, 1 };
+  art::RenderSettings settings;
+  double buildSeconds = 0;
+};
+
+void AddNote(std::string& note, const std::string& text)
+{
+  note += (note.empty() ? "" : "; ") + text;
+}
+
+#ifdef ART_HAVE_Reduction
+// The reduction `render` makes of a volume for its settings: weighted by what the transfer
+// function shows, vertices relocated unless there are iso-surfaces, clamped under MIP.
+art::ReducerOptions ReductionFor(const cli::Options& o, const art::RenderSettings& settings, long long voxels)
+{
+  art::ReducerOptions ro;
+  ro.Refine = cli::ParseEdgeRefinement(o.Get("refinement"), "--refinement") ? art::ReducerOptions::Refinement::EdgeSplit
+                                                                            : art::ReducerOptions::Refinement::Bisection;
+  if (o.Has("tets"))
+  {
+    ro.TargetTets = cli::ParseBudget(o.Get("tets"), voxels, "--tets");
+    if (ro.TargetTets < 6)
+    {
+      throw cli::UsageError("--tets expects a count of at least 6");
+    }
+  }
+  if (o.Has("max-error"))
+  {
+    ro.TargetError = cli::ParseMaxError(o.Get("max-error"), ro.ErrorRelative);
+  }
+  if (!o.Flag("plain-reduction") && settings.mode == art::RenderSettings::Mode::Composite)
+  {
+    ro.ScalarOpacity = settings.tf.OpacityPoints(); // model what this transfer function shows
+    for (const auto& iso : settings.isos) // and where its iso-surfaces lie
+    {
+      ro.IsoValues.push_back(iso.value);
+    }
+  }
+  // Not by default under iso-surfaces: on the CT's head rest (thin struts) the relocated fit
+  // crosses an iso-value in blobs where the voxels have thin lines (a worse picture than the
+  // lattice's).
+  ro.RelocateVertices = o.Flag("relocate") || (!o.Flag("no-relocate") && settings.isos.empty());
+  // Maximum intensity shows the fit's overshoot at sharp edges as bright facets.
+  ro.ClampToVoxels = settings.mode == art::RenderSettings::Mode::MaxIntensity;
+  return ro;
+}
+
+// Reduces the scene's volume (or takes the mesh from --mesh-cache) and labels it.
+void ReduceVolume(const cli::Options& o, const std::string& input, Scene& sc, art::Progress& progress, cli::Json& j)
+{
+  const art::ReducerOptions ro = ReductionFor(o, sc.settings, sc.volume->GetNumberOfPoints());
+  const art::VoxelVolume vv = art::VolumeFromImage(sc.volume, input);
+  art::ReducedMesh r;
+  std::optional<cli::MeshCache> cache;
+  bool cached = false;
+  if (o.Has("mesh-cache"))
+  {
+    cache.emplace(o.Get("mesh-cache"), vv, ro);
+    cached = cache->Load(r);
+    j.Set("mesh_cache", cache->File()).Set("mesh_cache_hit", cached);
+  }
+  if (!cached)
+  {
+    auto levels = art::TetReducer(ro).Run(vv, &progress);
+    if (levels.empty())
+    {
+      throw art::Error("the reducer produced no mesh", input);
+    }
+    r = std::move(levels.back());
+    try
+    {
+      if (cache)
+      {
+        cache->Store(r);
+      }
+    }
+    catch (const art::Error& e) // the image is still worth making
+    {
+      AddNote(sc.note, std::string("the mesh cache was not written: ") + e.what());
+    }
+  }
+  sc.mesh = cli::ToTetMesh(r);
+  std::ostringstream ss;
+  ss << std::setprecision(4) // errors to four digits (87.34 HU); counts are integers
+     << "adaptive tets (" << (r.Weighted ? "opacity-weighted " : "") << "least-squares reduction"
+     << (ro.RelocateVertices ? ", vertices relocated" : "")
+     << (ro.ClampToVoxels ? ", clamped to the voxel range" : "") << ", RMS error " << r.Rms << ", max " << r.Max;
+  if (r.Weighted)
+  {
+    ss << "; weighted RMS " << r.WeightedRms << ", max " << r.WeightedMax;
+  }
+  ss << (r.TargetReached ? ")" : "; " + cli::UnreachedReason(r, vv, ro.TargetTets == 0) + ")")
+     << (cached ? ", from the mesh cache" : "");
+  sc.meshLabel = ss.str();
+  j.Set("reduced_rms", r.Rms).Set("reduced_max", r.Max).Set("reduced_weighted", r.Weighted);
+  if (r.Weighted)
+  {
+    j.Set("reduced_weighted_rms", r.WeightedRms).Set("reduced_weighted_max", r.WeightedMax);
+  }
+}
+#endif
+
+// A volume input: its scalars, transfer function and (unless --reference) its tets.
+void LoadVolumeScene(const cli::Options& o, const std::string& input, Scene& sc, art::Progress& progress, cli::Json& j)
+{
+  sc.volume = art::LoadVolume(input, o.Get("array")); // it has scalars
+  art::RequireOneComponent(sc.volume, input);
+  sc.volume->GetPointData()->GetScalars()->GetRange(sc.range);
+  if (!std::isfinite(sc.range[0]) || !std::isfinite(sc.range[1]))
+  {
+    throw art::Error("the scalars hold infinite values (range " + std::to_string(sc.range[0]) + " .. " +
+        std::to_string(sc.range[1]) + ")",
+      input);
+  }
+  sc.settings = MakeSettings(o, MakeTF(o, sc.volume, sc.range[0], sc.range[1]));
+  if (o.Flag("reference"))
+  {
+    return;
+  }
+  if (o.Has("tets") || o.Has("max-error"))
+  {
+#ifdef ART_HAVE_Reduction
+    ReduceVolume(o, input, sc, progress, j);
+#else
+    (void)progress;
+    (void)j;
+    throw art::Error("--tets and --max-error need the Reduction module, which is not in this build", input);
+#endif
+  }
+  else
+  {
+    sc.mesh = art::TetMesh::FromImage(sc.volume, input);
+    sc.meshLabel = "full-resolution tets (5 per voxel cell)";
+  }
+}
+
+// A tet mesh input (other cells tetrahedralised, with a note).
+void LoadMeshScene(const cli::Options& o, const std::string& input, Scene& sc)
+{
+  auto grid = art::LoadMesh(input);
+  const std::string array = art::AddComponentArray(grid, o.Get("array"), input); // NAME:magnitude, NAME:N
+  sc.mesh = art::TetMesh::FromVTK(grid, array, &sc.note, input);
+  sc.meshLabel = "tet mesh";
+  sc.range[0] = sc.mesh.ScalarRange(0), sc.range[1] = sc.mesh.ScalarRange(1);
+  sc.settings = MakeSettings(o, MakeTF(o, grid, sc.range[0], sc.range[1], &sc.mesh));
+}
+
+// A transfer function made for other data (another modality or units) draws nothing: say so
+// rather than write a blank image without a word.
+void NoteTransparentTF(Scene& sc)
+{
+  if (!sc.settings.isos.empty() || !sc.settings.tf.Transparent(sc.range[0], sc.range[1]))
+  {
+    return;
+  }
+  const auto& n = sc.settings.tf.Nodes();
+  std::ostringstream ss;
+  ss << "the transfer function is transparent over the data's range " << sc.range[0] << " .. " << sc.range[1]
+     << " (its control points span " << n.front().s << " .. " << n.back().s << "): the image shows nothing";
+  AddNote(sc.note, ss.str());
+}
+
+struct Frame
+{
+  art::Image img, ref;
+  art::RenderStats st, rst;
+  bool haveRef = false;
+  art::ImageMetricsResult m;
+};
+
+// Casts the scene and, unless --no-error, its reference: the voxels for a volume, the exact rule
+// without early termination for a mesh rendered otherwise.
+Frame CastWithReference(const cli::Options& o, const std::string& input, const Scene& sc, const art::Camera& cam,
+  art::Progress& progress)
+{
+  Frame f;
+  if (o.Flag("reference"))
+  {
+    if (!sc.volume)
+    {
+      throw art::Error("--reference needs a voxel volume", input);
+    }
+    f.st = art::VoxelReferenceCaster::FromVTK(sc.volume, sc.settings, input).Render(cam, f.img, &progress);
+    return f;
+  }
+  f.st = art::TetRayCaster(sc.mesh, sc.settings).Render(cam, f.img, &progress);
+  if (o.Flag("no-error"))
+  {
+    return f;
+  }
+  if (sc.volume)
+  {
+    f.rst = art::VoxelReferenceCaster::FromVTK(sc.volume, sc.settings, input).Render(cam, f.ref, &progress);
+    f.haveRef = true;
+  }
+  else if (sc.settings.mode == art::RenderSettings::Mode::Composite &&
+    (sc.settings.rule == art::RenderSettings::Rule::Trapezoid || sc.settings.earlyTermination < 1))
+  {
+    art::RenderSettings exact = sc.settings; // a mesh's reference: the exact rule on that mesh
+    exact.rule = art::RenderSettings::Rule::Exact;
+    exact.earlyTermination = 2.0;
+    f.rst = art::TetRayCaster(sc.mesh, exact).Render(cam, f.ref, &progress);
+    f.haveRef = true;
+  }
+  if (f.haveRef)
+  {
+    f.m = art::CompareImages(f.img, f.ref);
+  }
+  return f;
+}
+
+// Images whose error figures would look perfect for the wrong reason: nothing hit, or opacity
+// built up over too long a unit distance (data in other units than the transfer function's).
+void NoteEmptyImage(const cli::Options& o, Scene& sc, const Frame& f)
+{
+  if (!o.Flag("reference") && f.st.counters.hits == 0)
+  {
+    AddNote(sc.note, "no ray meets the data (the camera sees none of it, or the clipping planes cut it all): the "
+                     "image is background only");
+  }
+  if (sc.settings.mode != art::RenderSettings::Mode::Composite || !sc.settings.isos.empty() ||
+    f.st.counters.hits == 0 || sc.settings.tf.Transparent(sc.range[0], sc.range[1]))
+  {
+    return;
+  }
+  float top = 0.f;
+  for (int y = 0; y < f.img.Height(); ++y)
+  {
+    for (int x = 0; x < f.img.Width(); ++x)
+    {
+      top = std::max(top, f.img.Pixel(x, y)[3]);
+    }
+  }
+  if (top < 0.02f)
+  {
+    std::ostringstream ss;
+    ss << "the image is all but clear (opacity at most " << top << "): the transfer function's opacity applies per "
+       << sc.settings.tf.UnitDistance() << " world units; a smaller --unit-distance shows more";
+    AddNote(sc.note, ss.str());
+  }
+}
+
+void PrintJson(const cli::Options& o, const cli::View& view, const Scene& sc, const Frame& f, cli::Json& j)
+{
+  const auto& c = f.st.counters;
+  const double mrays = c.rays / std::max(f.st.seconds, 1e-9) / 1e6;
+  const double nsPerTet = c.tetsCrossed ? f.st.seconds * 1e9 / double(c.tetsCrossed) * art::GetThreadCount() : 0;
+  j.Set("output", view.output).Set("width", view.width).Set("height", view.height);
+  if (!sc.note.empty())
+  {
+    j.Set("note", sc.note);
+  }
+  j.Set("mesh", o.Flag("reference") ? std::string("voxel reference") : sc.meshLabel);
+  j.Set("tets", static_cast<long long>(sc.mesh.NumberOfTets()))
+    .Set("vertices", static_cast<long long>(sc.mesh.NumberOfPoints()));
+  j.Set("build_seconds", sc.buildSeconds).Set("render_seconds", f.st.seconds).Set("mrays_per_second", mrays);
+  j.Set("tets_crossed", static_cast<long long>(c.tetsCrossed)).Set("tets_per_ray", c.PerRay(c.tetsCrossed));
+  j.Set("ns_per_tet_crossed_per_thread", nsPerTet).Set("entry_searches", static_cast<long long>(c.entrySearches))
+    .Set("fallback_exits", static_cast<long long>(f.st.nudges));
+  if (f.haveRef)
+  {
+    j.Set("reference_seconds", f.rst.seconds).Set("psnr_db", f.m.psnr).Set("ssim", f.m.ssim).Set("rmse", f.m.rmse);
+  }
+  std::printf("%s\n", j.Str().c_str());
+}
+
+void PrintText(const cli::Options& o, const std::string& input, const cli::View& view, const Scene& sc, const Frame& f)
+{
+  const auto& c = f.st.counters;
+  const double mrays = c.rays / std::max(f.st.seconds, 1e-9) / 1e6;
+  const double nsPerTet = c.tetsCrossed ? f.st.seconds * 1e9 / double(c.tetsCrossed) * art::GetThreadCount() : 0;
+  std::printf("input        %s\n", input.c_str());
+  if (!sc.note.empty())
+  {
+    std::printf("note         %s\n", sc.note.c_str());
+  }
+  if (o.Flag("reference"))
+  {
+    std::printf("render       voxel reference (trilinear, 2 samples/voxel, exact steps, no ERT), %d x %d: %.3f s\n",
+      view.width, view.height, f.st.seconds);
+  }
+  else
+  {
+    const std::size_t tets = sc.mesh.NumberOfTets(), verts = sc.mesh.NumberOfPoints();
+    std::printf("mesh         %s: %zu tet%s, %zu vert%s (%.2f s)\n", sc.meshLabel.c_str(), tets, tets == 1 ? "" : "s",
+      verts, verts == 1 ? "ex" : "ices", sc.buildSeconds);
+    std::printf("render       %d x %d, %s rule, ERT %g: %.3f s (%.2f Mrays/s), %.1f tets/ray, %.0f ns/tet "
+                "crossed per thread\n",
+      view.width, view.height, sc.settings.rule == art::RenderSettings::Rule::Exact ? "exact" : "trapezoid",
+      sc.settings.earlyTermination, f.st.seconds, mrays, c.PerRay(c.tetsCrossed), nsPerTet);
+  }
+  if (f.haveRef)
+  {
+    std::printf("reference    %s: %.3f s\n", sc.volume ? "voxel ray caster" : "exact rule on the mesh", f.rst.seconds);
+    std::printf("error        PSNR %.2f dB, SSIM %.4f, RMSE %.5f (%s, against the reference)\n", f.m.psnr, f.m.ssim,
+      f.m.rmse, f.m.channels == 3 ? "RGB" : "RGBA");
+  }
+  std::printf("output       %s\n", view.output.c_str());
+}
+
 int Run(const cli::Options& o, const std::string& input)
 {
   const cli::View view = cli::ViewFromOptions(o);
-  const bool json = o.Flag("json");
   cli::ProgressBar bar(o.Flag("quiet"));
   art::Progress progress(bar.Callback());
   cli::Json j;
   j.Set("input", input);
 
-  vtkSmartPointer<vtkImageData> volume;
-  art::TetMesh mesh;
-  std::string meshLabel, note;
-  double buildSeconds = 0, range[2] = { 0, 1 };
-  art::RenderSettings settings;
+  Scene sc;
   const auto t0 = std::chrono::steady_clock::now();
   if (art::KindOf(input) == art::DataKind::Volume)
   {
-    volume = art::LoadVolume(input, o.Get("array")); // it has scalars
-    art::RequireOneComponent(volume, input);
-    volume->GetPointData()->GetScalars()->GetRange(range);
-    if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
-    {
-      throw art::Error("the scalars hold infinite values (range " + std::to_string(range[0]) + " .. " +
-          std::to_string(range[1]) + ")",
-        input);
-    }
-    settings = MakeSettings(o, MakeTF(o, volume, range[0], range[1]));
-    if (!o.Flag("reference"))
-    {
-      if (o.Has("tets") || o.Has("max-error"))
-      {
-#ifdef ART_HAVE_Reduction
-        art::ReducerOptions ro;
-        ro.Refine = cli::ParseEdgeRefinement(o.Get("refinement"), "--refinement") ? art::ReducerOptions::Refinement::EdgeSplit
-                                                                  : art::ReducerOptions::Refinement::Bisection;
-        const long long voxels = volume->GetNumberOfPoints();
-        if (o.Has("tets"))
-        {
-          ro.TargetTets = cli::ParseBudget(o.Get("tets"), voxels, "--tets");
-          if (ro.TargetTets < 6)
-          {
-            throw cli::UsageError("--tets expects a count of at least 6");
-          }
-        }
-        if (o.Has("max-error"))
-        {
-          ro.TargetError = cli::ParseMaxError(o.Get("max-error"), ro.ErrorRelative);
-        }
-        if (!o.Flag("plain-reduction") && settings.mode == art::RenderSettings::Mode::Composite)
-        {
-          ro.ScalarOpacity = settings.tf.OpacityPoints(); // model what this transfer function shows
-          for (const auto& iso : settings.isos) // and where its iso-surfaces lie
-          {
-            ro.IsoValues.push_back(iso.value);
-          }
-        }
-        // Not by default under iso-surfaces: on the CT's head rest (thin struts) the relocated fit
-        // crosses an iso-value in blobs where the voxels have thin lines (a worse picture than the
-        // lattice's).
-        ro.RelocateVertices = o.Flag("relocate") || (!o.Flag("no-relocate") && settings.isos.empty());
-        // Maximum intensity shows the fit's overshoot at sharp edges as bright facets.
-        ro.ClampToVoxels = settings.mode == art::RenderSettings::Mode::MaxIntensity;
-        const art::VoxelVolume vv = art::VolumeFromImage(volume, input);
-        art::ReducedMesh r;
-        std::optional<cli::MeshCache> cache;
-        bool cached = false;
-        if (o.Has("mesh-cache"))
-        {
-          cache.emplace(o.Get("mesh-cache"), vv, ro);
-          cached = cache->Load(r);
-          j.Set("mesh_cache", cache->File()).Set("mesh_cache_hit", cached);
-        }
-        if (!cached)
-        {
-          auto levels = art::TetReducer(ro).Run(vv, &progress);
-          if (levels.empty())
-          {
-            throw art::Error("the reducer produced no mesh", input);
-          }
-          r = std::move(levels.back());
-          try
-          {
-            if (cache)
-            {
-              cache->Store(r);
-            }
-          }
-          catch (const art::Error& e) // the image is still worth making
-          {
-            note += std::string(note.empty() ? "" : "; ") + "the mesh cache was not written: " + e.what();
-          }
-        }
-        mesh = cli::ToTetMesh(r);
-        std::ostringstream ss;
-        ss << std::setprecision(4) // errors to four digits (87.34 HU); counts are integers
-           << "adaptive tets (" << (r.Weighted ? "opacity-weighted " : "") << "least-squares reduction"
-           << (ro.RelocateVertices ? ", vertices relocated" : "")
-           << (ro.ClampToVoxels ? ", clamped to the voxel range" : "") << ", RMS error "
-           << r.Rms << ", max " << r.Max;
-        if (r.Weighted)
-        {
-          ss << "; weighted RMS " << r.WeightedRms << ", max " << r.WeightedMax;
-        }
-        ss << (r.TargetReached ? ")" : "; " + cli::UnreachedReason(r, vv, ro.TargetTets == 0) + ")")
-           << (cached ? ", from the mesh cache" : "");
-        meshLabel = ss.str();
-        j.Set("reduced_rms", r.Rms).Set("reduced_max", r.Max).Set("reduced_weighted", r.Weighted);
-        if (r.Weighted)
-        {
-          j.Set("reduced_weighted_rms", r.WeightedRms).Set("reduced_weighted_max", r.WeightedMax);
-        }
-#else
-        throw art::Error("--tets and --max-error need the Reduction module, which is not in this build", input);
-#endif
-      }
-      else
-      {
-        mesh = art::TetMesh::FromImage(volume, input);
-        meshLabel = "full-resolution tets (5 per voxel cell)";
-      }
-    }
+    LoadVolumeScene(o, input, sc, progress, j);
   }
   else
   {
-    auto grid = art::LoadMesh(input);
-    const std::string array = art::AddComponentArray(grid, o.Get("array"), input); // NAME:magnitude, NAME:N
-    mesh = art::TetMesh::FromVTK(grid, array, &note, input);
-    meshLabel = "tet mesh";
-    range[0] = mesh.ScalarRange(0), range[1] = mesh.ScalarRange(1);
-    settings = MakeSettings(o, MakeTF(o, grid, range[0], range[1], &mesh));
+    LoadMeshScene(o, input, sc);
   }
-  buildSeconds = Seconds(t0);
-  if (settings.isos.empty() && settings.tf.Transparent(range[0], range[1]))
-  {
-    // A transfer function made for other data (another modality or units) draws nothing: say so
-    // rather than write a blank image without a word.
-    const auto& n = settings.tf.Nodes();
-    std::ostringstream ss;
-    ss << (note.empty() ? "" : "; ") << "the transfer function is transparent over the data's range " << range[0]
-       << " .. " << range[1] << " (its control points span " << n.front().s << " .. " << n.back().s
-       << "): the image shows nothing";
-    note += ss.str();
-  }
+  sc.buildSeconds = Seconds(t0);
+  NoteTransparentTF(sc);
 
   art::Box3 bounds;
-  if (volume)
+  if (sc.volume)
   {
     double b[6];
-    volume->GetBounds(b);
+    sc.volume->GetBounds(b);
     bounds = art::Box3::FromBounds(b);
   }
   else
   {
-    bounds = mesh.Bounds();
+    bounds = sc.mesh.Bounds();
   }
   vtkNew<vtkCamera> vcam;
   cli::SetupCamera(o, bounds, vcam);
   const art::Camera cam = art::Camera::FromVTK(vcam, view.width, view.height);
 
-  art::Image img, ref;
-  art::RenderStats st, rst;
-  bool haveRef = false;
-  if (o.Flag("reference"))
-  {
-    if (!volume)
-    {
-      throw art::Error("--reference needs a voxel volume", input);
-    }
-    st = art::VoxelReferenceCaster::FromVTK(volume, settings, input).Render(cam, img, &progress);
-  }
-  else
-  {
-    const art::TetRayCaster caster(mesh, settings);
-    st = caster.Render(cam, img, &progress);
-    if (!o.Flag("no-error"))
-    {
-      if (volume)
-      {
-        rst = art::VoxelReferenceCaster::FromVTK(volume, settings, input).Render(cam, ref, &progress);
-        haveRef = true;
-      }
-      else if (settings.mode == art::RenderSettings::Mode::Composite &&
-        (settings.rule == art::RenderSettings::Rule::Trapezoid || settings.earlyTermination < 1))
-      {
-        art::RenderSettings exact = settings; // a mesh's reference: the exact rule on that mesh
-        exact.rule = art::RenderSettings::Rule::Exact;
-        exact.earlyTermination = 2.0;
-        rst = art::TetRayCaster(mesh, exact).Render(cam, ref, &progress);
-        haveRef = true;
-      }
-    }
-  }
+  Frame f = CastWithReference(o, input, sc, cam, progress);
   bar.Finish();
-  art::ImageMetricsResult m;
-  if (haveRef)
-  {
-    m = art::CompareImages(img, ref);
-  }
-  if (!o.Flag("reference") && st.counters.hits == 0)
-  {
-    // As render says of a surface out of view: a blank image and "PSNR inf" would pass for a
-    // perfect render.
-    note += std::string(note.empty() ? "" : "; ") +
-      "no ray meets the data (the camera sees none of it, or the clipping planes cut it all): the image is "
-      "background only";
-  }
-  if (settings.mode == art::RenderSettings::Mode::Composite && settings.isos.empty() && st.counters.hits > 0 &&
-    !settings.tf.Transparent(range[0], range[1]))
-  {
-    // Opacity that builds up over too long a unit distance (data in other units than the
-    // transfer function's) gives an image all but clear, whose error figures look perfect.
-    float top = 0.f;
-    for (int y = 0; y < img.Height(); ++y)
-    {
-      for (int x = 0; x < img.Width(); ++x)
-      {
-        top = std::max(top, img.Pixel(x, y)[3]);
-      }
-    }
-    if (top < 0.02f)
-    {
-      std::ostringstream ss;
-      ss << (note.empty() ? "" : "; ") << "the image is all but clear (opacity at most " << top
-         << "): the transfer function's opacity applies per " << settings.tf.UnitDistance()
-         << " world units; a smaller --unit-distance shows more";
-      note += ss.str();
-    }
-  }
-  img.CompositeOver({ view.background[0], view.background[1], view.background[2] });
-  art::WriteImage(img, view.output);
+  NoteEmptyImage(o, sc, f);
+  f.img.CompositeOver({ view.background[0], view.background[1], view.background[2] });
+  art::WriteImage(f.img, view.output);
 
-  const auto& c = st.counters;
-  const double mrays = c.rays / std::max(st.seconds, 1e-9) / 1e6;
-  const double nsPerTet = c.tetsCrossed ? st.seconds * 1e9 / double(c.tetsCrossed) * art::GetThreadCount() : 0;
-  if (json)
+  if (o.Flag("json"))
   {
-    j.Set("output", view.output).Set("width", view.width).Set("height", view.height);
-    if (!note.empty())
-    {
-      j.Set("note", note);
-    }
-    j.Set("mesh", o.Flag("reference") ? std::string("voxel reference") : meshLabel);
-    j.Set("tets", static_cast<long long>(mesh.NumberOfTets()))
-      .Set("vertices", static_cast<long long>(mesh.NumberOfPoints()));
-    j.Set("build_seconds", buildSeconds).Set("render_seconds", st.seconds).Set("mrays_per_second", mrays);
-    j.Set("tets_crossed", static_cast<long long>(c.tetsCrossed)).Set("tets_per_ray", c.PerRay(c.tetsCrossed));
-    j.Set("ns_per_tet_crossed_per_thread", nsPerTet).Set("entry_searches", static_cast<long long>(c.entrySearches))
-      .Set("fallback_exits", static_cast<long long>(st.nudges));
-    if (haveRef)
-    {
-      j.Set("reference_seconds", rst.seconds).Set("psnr_db", m.psnr).Set("ssim", m.ssim).Set("rmse", m.rmse);
-    }
-    std::printf("%s\n", j.Str().c_str());
-    return cli::ExitOk;
-  }
-  std::printf("input        %s\n", input.c_str());
-  if (!note.empty())
-  {
-    std::printf("note         %s\n", note.c_str());
-  }
-  if (o.Flag("reference"))
-  {
-    std::printf("render       voxel reference (trilinear, 2 samples/voxel, exact steps, no ERT), %d x %d: %.3f s\n",
-      view.width, view.height, st.seconds);
+    PrintJson(o, view, sc, f, j);
   }
   else
   {
-    std::printf("mesh         %s: %zu tet%s, %zu vert%s (%.2f s)\n", meshLabel.c_str(), mesh.NumberOfTets(),
-      mesh.NumberOfTets() == 1 ? "" : "s", mesh.NumberOfPoints(), mesh.NumberOfPoints() == 1 ? "ex" : "ices",
-      buildSeconds);
-    std::printf("render       %d x %d, %s rule, ERT %g: %.3f s (%.2f Mrays/s), %.1f tets/ray, %.0f ns/tet "
-                "crossed per thread\n",
-      view.width, view.height, settings.rule == art::RenderSettings::Rule::Exact ? "exact" : "trapezoid",
-      settings.earlyTermination, st.seconds, mrays, c.PerRay(c.tetsCrossed), nsPerTet);
+    PrintText(o, input, view, sc, f);
   }
-  if (haveRef)
-  {
-    std::printf("reference    %s: %.3f s\n", volume ? "voxel ray caster" : "exact rule on the mesh", rst.seconds);
-    std::printf("error        PSNR %.2f dB, SSIM %.4f, RMSE %.5f (%s, against the reference)\n", m.psnr, m.ssim,
-      m.rmse, m.channels == 3 ? "RGB" : "RGBA");
-  }
-  std::printf("output       %s\n", view.output.c_str());
   return cli::ExitOk;
 }
 
