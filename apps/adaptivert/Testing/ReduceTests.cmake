@@ -59,7 +59,9 @@ art_expect_test(cli.reduce_tf EXIT 0
   ARGS reduce "${_ct}" "${_out}/reduce_tf.vtu" --tets 5000 --tf ct-skin-bone)
 art_expect_test(cli.reduce_tf_json EXIT 0 STDOUT "\"weighted\":true,\"weighted_rms_error\":[0-9.e+-]+,\"weighted_max_error\""
   ARGS reduce --json --quiet "${_ct}" "${_out}/reduce_tf_json.vtu" --tets 2000 --tf ct-bone)
-art_expect_test(cli.reduce_bad_tf EXIT 1 STDERR "unknown transfer-function preset 'nope'" ONE_LINE_STDERR
+# --tf that is neither a preset nor a file is a usage error, said before the volume is read.
+art_expect_test(cli.reduce_bad_tf EXIT 2 ONE_LINE_STDERR
+  STDERR "--tf expects a transfer-function preset \\(auto, .*\\) or a file, got 'nope': no preset has that name and no file of that name exists"
   ARGS reduce "${_ct}" "${_out}/x.vtu" --tets 100 --tf nope)
 art_expect_test(cli.reduce_no_target EXIT 2 STDERR "give --tets N or --max-error E" ONE_LINE_STDERR
   ARGS reduce "${_ct}" "${_out}/x.vtu")

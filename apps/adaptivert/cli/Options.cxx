@@ -1,11 +1,53 @@
 #include "cli/Options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
 namespace cli
 {
+namespace
+{
+std::size_t EditDistance(const std::string& a, const std::string& b)
+{
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+  {
+    row[j] = j;
+  }
+  for (std::size_t i = 1; i <= a.size(); ++i)
+  {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+    {
+      const std::size_t up = row[j];
+      row[j] = std::min({ row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1) });
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+} // namespace
+
+std::string Options::Suggest(const std::string& name) const
+{
+  // The declared option nearest in spelling, if it is near: a typo or a shortened name.
+  std::string best;
+  std::size_t bestDistance = name.size() < 4 ? 1 : 2;
+  for (const auto& candidate : Order)
+  {
+    const std::size_t d = EditDistance(name, candidate);
+    if (d <= bestDistance && (best.empty() || d < bestDistance))
+    {
+      best = candidate;
+      bestDistance = d;
+    }
+  }
+  return best;
+}
+
 void Options::Add(const std::string& name, char shortName, const std::string& value,
   const std::string& help, const std::string& def)
 {
@@ -59,7 +101,8 @@ void Options::Parse(int argc, char** argv, int first)
     const auto it = Specs.find(name);
     if (it == Specs.end())
     {
-      throw UsageError("unknown option '--" + name + "'");
+      const std::string near = Suggest(name);
+      throw UsageError("unknown option '--" + name + "'" + (near.empty() ? "" : " (did you mean --" + near + "?)"));
     }
     if (it->second.value.empty())
     {

@@ -39,6 +39,9 @@ public:
 
   std::string Help() const;
 
+  /// The declared option whose name is within a typo of `name` ("tet" -> "tets"), or "".
+  std::string Suggest(const std::string& name) const;
+
 private:
   struct Spec
   {

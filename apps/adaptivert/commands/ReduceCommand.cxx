@@ -10,6 +10,7 @@
 #include "Progress.h"
 #include "cli/ProgressBar.h"
 #include "rendering/ReductionTargets.h"
+#include "rendering/TransferFunctionChoice.h"
 #include "ReducerVTK.h"
 #include "TetReducer.h"
 
@@ -102,6 +103,10 @@ int Run(const cli::Options& o)
   if (!(opt.RefineFraction >= 0.0 && opt.RefineFraction <= 4.0) || !(opt.SolverTolerance > 0 && opt.SolverTolerance < 1))
   {
     throw cli::UsageError("--refine-fraction must be in [0, 4] and --tolerance in (0, 1)");
+  }
+  if (o.Has("tf"))
+  {
+    cli::CheckTransferFunctionName(o.Get("tf"));
   }
 
   auto image = art::LoadVolume(in, o.Get("array"));

@@ -14,6 +14,7 @@
 #include "rendering/ReducedTets.h"
 #include "rendering/ReductionTargets.h"
 #include "rendering/Render.h"
+#include "rendering/TransferFunctionChoice.h"
 #include "TetMesh.h"
 #include "TetRayCaster.h"
 #include "TransferFunction.h"
@@ -510,6 +511,7 @@ int Run(const cli::Options& o, const std::string& input)
   cli::Json j;
   j.Set("input", input);
 
+  cli::CheckTransferFunctionName(o.Get("tf"));
   Scene sc;
   const auto t0 = std::chrono::steady_clock::now();
   if (art::KindOf(input) == art::DataKind::Volume)
