@@ -71,7 +71,10 @@ std::vector<double> Blur(const std::vector<double>& in, int w, int h, const std:
   return out;
 }
 
-double ChannelSSIM(const Image& a, const Image& b, int c, const std::vector<double>& k)
+// Mean SSIM of channel c over the image, and over the pixels `mask` marks (when given) into
+// *maskMean.
+double ChannelSSIM(const Image& a, const Image& b, int c, const std::vector<double>& k,
+  const std::vector<char>* mask = nullptr, double* maskMean = nullptr)
 {
   const int w = a.Width(), h = a.Height();
   const size_t n = static_cast<size_t>(w) * h;
@@ -87,16 +90,43 @@ double ChannelSSIM(const Image& a, const Image& b, int c, const std::vector<doub
   const auto mx = Blur(x, w, h, k), my = Blur(y, w, h, k);
   const auto sxx = Blur(xx, w, h, k), syy = Blur(yy, w, h, k), sxy = Blur(xy, w, h, k);
   const double C1 = 0.01 * 0.01, C2 = 0.03 * 0.03;
-  double sum = 0;
+  double sum = 0, maskSum = 0;
+  size_t masked = 0;
   for (size_t i = 0; i < n; ++i)
   {
     const double vx = sxx[i] - mx[i] * mx[i], vy = syy[i] - my[i] * my[i];
     const double cxy = sxy[i] - mx[i] * my[i];
-    sum += ((2 * mx[i] * my[i] + C1) * (2 * cxy + C2)) /
-      ((mx[i] * mx[i] + my[i] * my[i] + C1) * (vx + vy + C2));
+    const double v = ((2 * mx[i] * my[i] + C1) * (2 * cxy + C2)) / ((mx[i] * mx[i] + my[i] * my[i] + C1) * (vx + vy + C2));
+    sum += v;
+    if (mask && (*mask)[i])
+    {
+      maskSum += v;
+      ++masked;
+    }
+  }
+  if (maskMean)
+  {
+    *maskMean = masked ? maskSum / double(masked) : 1.0;
   }
   return sum / double(n);
 }
+
+std::vector<double> SsimKernel()
+{
+  std::vector<double> k(11);
+  double ks = 0;
+  for (int i = 0; i < 11; ++i)
+  {
+    k[i] = std::exp(-double((i - 5) * (i - 5)) / (2 * 1.5 * 1.5));
+    ks += k[i];
+  }
+  for (double& v : k)
+  {
+    v /= ks;
+  }
+  return k;
+}
+
 // Over the first `channels` channels; the sizes checked.
 double RmseOver(const Image& a, const Image& b, int channels)
 {
@@ -124,17 +154,7 @@ double SsimOver(const Image& a, const Image& b, int channels)
   {
     return 1.0;
   }
-  std::vector<double> k(11);
-  double ks = 0;
-  for (int i = 0; i < 11; ++i)
-  {
-    k[i] = std::exp(-double((i - 5) * (i - 5)) / (2 * 1.5 * 1.5));
-    ks += k[i];
-  }
-  for (double& v : k)
-  {
-    v /= ks;
-  }
+  const std::vector<double> k = SsimKernel();
   double s = 0;
   for (int c = 0; c < channels; ++c)
   {
@@ -194,6 +214,61 @@ ImageMetricsResult CompareImages(const Image& a, const Image& b)
   for (size_t i = 0; i < a.Pixels().size(); ++i)
   {
     r.maxAbs = std::max(r.maxAbs, std::fabs(double(a.Pixels()[i]) - double(b.Pixels()[i])));
+  }
+  return r;
+}
+
+ImageMetricsResult CompareOnBackground(const Image& a, const Image& b, const std::array<float, 3>& background)
+{
+  CheckSameSize(a, b);
+  Image ca = a, cb = b;
+  ca.CompositeOver(background);
+  cb.CompositeOver(background);
+  ImageMetricsResult r;
+  r.channels = 3;
+  const std::size_t n = static_cast<std::size_t>(a.Width()) * a.Height();
+  std::vector<char> object(n, 0);
+  double whole = 0, inside = 0;
+  long long count = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    double d2 = 0;
+    bool covered = false;
+    for (int c = 0; c < 3; ++c)
+    {
+      const float va = ca.Pixels()[4 * i + c], vb = cb.Pixels()[4 * i + c];
+      const double d = double(va) - double(vb);
+      d2 += d * d;
+      r.maxAbs = std::max(r.maxAbs, std::fabs(d));
+      covered = covered || std::fabs(va - background[c]) > ObjectStep || std::fabs(vb - background[c]) > ObjectStep;
+    }
+    whole += d2;
+    if (covered)
+    {
+      object[i] = 1;
+      inside += d2;
+      ++count;
+    }
+  }
+  const auto psnr = [](double rmse) { return rmse > 0 ? -20.0 * std::log10(rmse) : std::numeric_limits<double>::infinity(); };
+  r.rmse = n ? std::sqrt(whole / double(3 * n)) : 0.0;
+  r.psnr = psnr(r.rmse);
+  r.objectPixels = count;
+  r.objectRmse = count ? std::sqrt(inside / double(3 * count)) : 0.0;
+  r.objectPsnr = psnr(r.objectRmse);
+  r.ssim = r.objectSsim = 1.0;
+  if (n)
+  {
+    const std::vector<double> k = SsimKernel();
+    double s = 0, so = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      double m = 1.0;
+      s += ChannelSSIM(ca, cb, c, k, &object, &m);
+      so += m;
+    }
+    r.ssim = s / 3;
+    r.objectSsim = so / 3;
   }
   return r;
 }

@@ -95,6 +95,23 @@ set_tests_properties(cli.batch_dicom_folder PROPERTIES FIXTURES_SETUP batch_dico
 add_test(NAME cli.batch_dicom_folder_named COMMAND ${CMAKE_COMMAND} -E cat
   "${CMAKE_CURRENT_BINARY_DIR}/dicom-job/frames/dicom-rotated_c000_s00.result.json")
 set_tests_properties(cli.batch_dicom_folder_named PROPERTIES FIXTURES_REQUIRED batch_dicom_done LABELS unit)
+# A gzipped NIfTI's frames are named after "brain", not "brain.nii" (brain.nii_c000_s00); the
+# CSV gives each reduced frame its reduction's time and the object's figures beside the frame's.
+file(MAKE_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}/nii-job")
+file(COPY_FILE "${CMAKE_SOURCE_DIR}/tests/data/nifti-radiological.nii" "${CMAKE_CURRENT_BINARY_DIR}/nii-job/brain.nii")
+file(ARCHIVE_CREATE OUTPUT "${CMAKE_CURRENT_BINARY_DIR}/nii-job/brain.nii.gz"
+  PATHS "${CMAKE_CURRENT_BINARY_DIR}/nii-job/brain.nii" FORMAT raw COMPRESSION GZip)
+file(REMOVE "${CMAKE_CURRENT_BINARY_DIR}/nii-job/brain.nii")
+file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/nii-job/job.json"
+  "{\"output\": \"frames\", \"datasets\": [\"brain.nii.gz\"], \"size\": \"16x16\", \"cameras\": {\"orbit\": 1},\n"
+  " \"settings\": [{\"tets\": 40}], \"reference\": {\"reference\": true}}\n")
+art_expect_test(cli.batch_gz_stem EXIT 0 STDOUT "tasks +2 \\(2 rendered now, 0 failed\\)"
+  ARGS batch "${CMAKE_CURRENT_BINARY_DIR}/nii-job/job.json" --quiet)
+art_clean_first(cli.batch_gz_stem "${CMAKE_CURRENT_BINARY_DIR}/nii-job/frames")
+set_tests_properties(cli.batch_gz_stem PROPERTIES FIXTURES_SETUP batch_gz_done)
+add_test(NAME cli.batch_gz_stem_csv COMMAND ${CMAKE_COMMAND}
+  "-DCSV=${CMAKE_CURRENT_BINARY_DIR}/nii-job/frames/results.csv" -P "${CMAKE_CURRENT_LIST_DIR}/batch_csv_check.cmake")
+set_tests_properties(cli.batch_gz_stem_csv PROPERTIES FIXTURES_REQUIRED batch_gz_done LABELS unit)
 # A job file edited between runs (a setting changed) kept the frames of the old setting as done.
 # Two job files share one output folder and frame names; the second's frame is rendered again.
 foreach(_o 1 0.5)

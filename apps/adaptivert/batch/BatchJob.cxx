@@ -321,7 +321,13 @@ BatchJob LoadBatchJob(const std::string& path)
       // named "_c000_s00.png". A folder is named whole (a dot in it is no extension).
       fs::path named(ds);
       named = named.has_filename() ? named : named.parent_path();
-      const std::string plain = fs::is_directory(named, ec) ? named.filename().string() : named.stem().string();
+      // "brain.nii.gz" is "brain", not "brain.nii".
+      fs::path leaf = named.filename();
+      if (leaf.extension() == ".gz" || leaf.extension() == ".GZ")
+      {
+        leaf = leaf.stem();
+      }
+      const std::string plain = fs::is_directory(named, ec) ? named.filename().string() : leaf.stem().string();
       std::string stem = plain;
       for (int n = 2; !stems.insert(stem).second; ++n)
       {

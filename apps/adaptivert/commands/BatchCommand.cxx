@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -88,6 +89,28 @@ json TaskKey(const cli::BatchJob& job, const cli::BatchTask& t)
   return { { "dataset", t.dataset }, { "args", t.args }, { "reference_args", ref } };
 }
 
+// The frame's --background (black unless its setting says otherwise): the colour its object's
+// pixels are told apart from.
+std::array<float, 3> BackgroundOf(const std::vector<std::string>& args)
+{
+  std::array<float, 3> bg = { 0.f, 0.f, 0.f };
+  for (std::size_t i = 0; i + 1 < args.size(); ++i)
+  {
+    if (args[i] == "--background")
+    {
+      char c1 = 0, c2 = 0;
+      std::istringstream in(args[i + 1]);
+      std::array<float, 3> v{};
+      if (in >> v[0] >> c1 >> v[1] >> c2 >> v[2] && c1 == ',' && c2 == ',')
+      {
+        bg = v;
+      }
+    }
+  }
+  return bg;
+}
+
+
 json RunTask(const cli::BatchJob& job, const cli::BatchTask& t)
 {
   const std::string image = job.outputDir + "/" + t.name + ".png";
@@ -147,13 +170,26 @@ json RunTask(const cli::BatchJob& job, const cli::BatchTask& t)
     json ref;
     if (ReadResult(ResultPath(job, t.reference), ref) && ref.value("status", "") == "ok")
     {
-      const auto m = art::CompareImages(art::ReadImage(ref["image"].get<std::string>()), art::ReadImage(image));
+      const auto m = art::CompareOnBackground(
+        art::ReadImage(ref["image"].get<std::string>()), art::ReadImage(image), BackgroundOf(t.args));
+      const auto finite = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
       res["rmse"] = m.rmse;
-      res["psnr_db"] = std::isfinite(m.psnr) ? json(m.psnr) : json(nullptr);
+      res["psnr_db"] = finite(m.psnr);
       res["ssim"] = m.ssim;
+      res["object_rmse"] = m.objectRmse;
+      res["object_psnr_db"] = finite(m.objectPsnr);
+      res["object_ssim"] = m.objectSsim;
     }
   }
   return res;
+}
+
+// The reduction's time (a volume's frames), as the renderer reports it.
+json ReduceSeconds(const json& out)
+{
+  const bool reduced = out.is_object() && out.contains("mesh") && out["mesh"].is_string() &&
+    out["mesh"].get<std::string>().rfind("adaptive tets", 0) == 0;
+  return reduced && out.contains("build_seconds") ? out["build_seconds"] : json();
 }
 
 std::string CsvField(const json& v)
@@ -192,7 +228,8 @@ json RenderSeconds(const json& r)
 void WriteSummary(const cli::BatchJob& job, const std::string& csvPath, const std::string& chartPath, bool quiet)
 {
   std::ostringstream csv;
-  csv << "name,dataset,camera,setting,status,render_seconds,tets,rmse,psnr_db,ssim,image,error\n";
+  csv << "name,dataset,camera,setting,status,render_seconds,reduce_seconds,tets,rmse,psnr_db,ssim,object_rmse,"
+         "object_psnr_db,object_ssim,image,error\n";
   for (const auto& t : job.tasks)
   {
     json r;
@@ -203,10 +240,12 @@ void WriteSummary(const cli::BatchJob& job, const std::string& csvPath, const st
     const json& out = r.contains("render") ? r["render"] : json();
     csv << CsvField(r["name"]) << "," << CsvField(r["dataset"]) << "," << CsvField(r["camera"]) << ","
         << CsvField(r.value("setting", "")) << "," << CsvField(r["status"]) << ","
-        << CsvField(RenderSeconds(r)) << ","
+        << CsvField(RenderSeconds(r)) << "," << CsvField(ReduceSeconds(out)) << ","
         << CsvField(out.is_object() && out.contains("tets") ? out["tets"] : json()) << ","
         << CsvField(r.value("rmse", json())) << "," << CsvField(r.value("psnr_db", json())) << ","
-        << CsvField(r.value("ssim", json())) << "," << CsvField(r["image"]) << ","
+        << CsvField(r.value("ssim", json())) << "," << CsvField(r.value("object_rmse", json())) << ","
+        << CsvField(r.value("object_psnr_db", json())) << "," << CsvField(r.value("object_ssim", json())) << ","
+        << CsvField(r["image"]) << ","
         << CsvField(r.value("error", json())) << "\n";
   }
   art::WriteFileAtomic(csvPath, csv.str());

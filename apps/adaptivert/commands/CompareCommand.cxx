@@ -6,12 +6,23 @@
 #include "ImageMetrics.h"
 #include "cli/Json.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <cstdio>
 #include <filesystem>
 
 namespace
 {
+std::string Fixed(double v, int digits)
+{
+  std::ostringstream ss;
+  ss << std::fixed << std::setprecision(digits) << v;
+  return ss.str();
+}
+
 void Declare(cli::Options& o)
 {
   o.Add("diff", 'd', "FILE", "write |A - B| (scaled by --gain) as an image");
@@ -19,6 +30,22 @@ void Declare(cli::Options& o)
   o.Add("min-psnr", 0, "DB", "fail (exit 1) when PSNR is below this");
   o.Add("max-rmse", 0, "E", "fail (exit 1) when RMSE is above this");
   o.Add("min-ssim", 0, "S", "fail (exit 1) when SSIM is below this");
+  o.Add("background", 0, "R,G,B",
+    "the background the images were rendered on (0-1): images with alpha are composited over it, and the "
+    "object's pixels are those that differ from it in either image", "0,0,0");
+}
+
+std::array<float, 3> ParseBackground(const std::string& text)
+{
+  std::istringstream in(text);
+  std::array<float, 3> bg{};
+  char c1 = 0, c2 = 0;
+  if (!(in >> bg[0] >> c1 >> bg[1] >> c2 >> bg[2]) || c1 != ',' || c2 != ',' || !(in >> std::ws).eof() ||
+    std::any_of(bg.begin(), bg.end(), [](float v) { return !(v >= 0.f && v <= 1.f); }))
+  {
+    throw cli::UsageError("--background expects R,G,B in [0, 1], got '" + text + "'");
+  }
+  return bg;
 }
 
 int Run(const cli::Options& o)
@@ -28,6 +55,7 @@ int Run(const cli::Options& o)
     throw cli::UsageError("needs exactly two images A B");
   }
   const std::string pa = o.Positional()[0], pb = o.Positional()[1];
+  const std::array<float, 3> background = ParseBackground(o.Get("background"));
   if (o.Has("diff"))
   {
     const double gain = o.GetDouble("gain");
@@ -55,7 +83,7 @@ int Run(const cli::Options& o)
         " differs from " + pa + " (" + std::to_string(a.Width()) + "x" + std::to_string(a.Height()) + ")",
       pb);
   }
-  const art::ImageMetricsResult m = art::CompareImages(a, b);
+  const art::ImageMetricsResult m = art::CompareOnBackground(a, b, background);
   if (o.Has("diff"))
   {
     art::WriteImage(art::DifferenceImage(a, b, static_cast<float>(o.GetDouble("gain"))), o.Get("diff"));
@@ -77,23 +105,21 @@ int Run(const cli::Options& o)
   {
     cli::Json j;
     j.Set("a", pa).Set("b", pb).Set("rmse", m.rmse).Set("psnr_db", m.psnr).Set("ssim", m.ssim)
-      .Set("max_abs", m.maxAbs).Set("channels", m.channels == 3 ? "RGB" : "RGBA").Set("pass", failed.empty());
+      .Set("max_abs", m.maxAbs).Set("channels", "RGB").Set("object_rmse", m.objectRmse)
+      .Set("object_psnr_db", m.objectPsnr).Set("object_ssim", m.objectSsim).Set("object_pixels", m.objectPixels)
+      .Set("pass", failed.empty());
     std::printf("%s\n", j.Str().c_str());
   }
   else
   {
+    const auto db = [](double v) { return std::isinf(v) ? std::string("inf dB (identical)") : Fixed(v, 2) + " dB"; };
     std::printf("RMSE     %.6f\n", m.rmse);
-    if (std::isinf(m.psnr))
-    {
-      std::printf("PSNR     inf dB (identical)\n");
-    }
-    else
-    {
-      std::printf("PSNR     %.2f dB\n", m.psnr);
-    }
+    std::printf("PSNR     %s\n", db(m.psnr).c_str());
     std::printf("SSIM     %.5f\n", m.ssim);
     std::printf("max|d|   %.6f\n", m.maxAbs);
-    std::printf("over     %s\n", m.channels == 3 ? "RGB (both images are opaque)" : "RGBA");
+    std::printf("over     RGB, composited over the background %s\n", o.Get("background").c_str());
+    std::printf("object   PSNR %s, SSIM %.5f, RMSE %.6f over the %lld pixels either image covers\n",
+      db(m.objectPsnr).c_str(), m.objectSsim, m.objectRmse, m.objectPixels);
   }
   if (!failed.empty())
   {
@@ -103,7 +129,7 @@ int Run(const cli::Options& o)
   return cli::ExitOk;
 }
 
-cli::Registrar reg({ "compare", "image error between two images: RMSE, PSNR, SSIM (over RGBA, or RGB when both are opaque), a difference image",
+cli::Registrar reg({ "compare", "image error between two images: RMSE, PSNR, SSIM over the frame and over the object, a difference image",
   "adaptivert compare [options] A B",
   "  adaptivert compare reference.png reduced.png --diff diff.png\n"
   "  adaptivert compare baseline.png out.png --min-psnr 40   # a regression check: exit 1 below 40 dB\n",

@@ -376,7 +376,7 @@ struct Frame
 // Casts the scene and, unless --no-error, its reference: the voxels for a volume, the exact rule
 // without early termination for a mesh rendered otherwise.
 Frame CastWithReference(const cli::Options& o, const std::string& input, const Scene& sc, const art::Camera& cam,
-  art::Progress& progress)
+  const std::array<float, 3>& background, art::Progress& progress)
 {
   Frame f;
   if (o.Flag("reference"))
@@ -409,7 +409,7 @@ Frame CastWithReference(const cli::Options& o, const std::string& input, const S
   }
   if (f.haveRef)
   {
-    f.m = art::CompareImages(f.img, f.ref);
+    f.m = art::CompareOnBackground(f.img, f.ref, background); // as the images are written
   }
   return f;
 }
@@ -465,6 +465,8 @@ void PrintJson(const cli::Options& o, const cli::View& view, const Scene& sc, co
   if (f.haveRef)
   {
     j.Set("reference_seconds", f.rst.seconds).Set("psnr_db", f.m.psnr).Set("ssim", f.m.ssim).Set("rmse", f.m.rmse);
+    j.Set("object_psnr_db", f.m.objectPsnr).Set("object_ssim", f.m.objectSsim).Set("object_rmse", f.m.objectRmse)
+      .Set("object_pixels", f.m.objectPixels);
   }
   std::printf("%s\n", j.Str().c_str());
 }
@@ -497,8 +499,10 @@ void PrintText(const cli::Options& o, const std::string& input, const cli::View&
   if (f.haveRef)
   {
     std::printf("reference    %s: %.3f s\n", sc.volume ? "voxel ray caster" : "exact rule on the mesh", f.rst.seconds);
-    std::printf("error        PSNR %.2f dB, SSIM %.4f, RMSE %.5f (%s, against the reference)\n", f.m.psnr, f.m.ssim,
-      f.m.rmse, f.m.channels == 3 ? "RGB" : "RGBA");
+    std::printf("error        PSNR %.2f dB, SSIM %.4f, RMSE %.5f (RGB over the background, against the reference)\n",
+      f.m.psnr, f.m.ssim, f.m.rmse);
+    std::printf("             object: PSNR %.2f dB, SSIM %.4f, RMSE %.5f (the %lld pixels either image covers)\n",
+      f.m.objectPsnr, f.m.objectSsim, f.m.objectRmse, f.m.objectPixels);
   }
   std::printf("output       %s\n", view.output.c_str());
 }
@@ -540,10 +544,11 @@ int Run(const cli::Options& o, const std::string& input)
   cli::SetupCamera(o, bounds, vcam);
   const art::Camera cam = art::Camera::FromVTK(vcam, view.width, view.height);
 
-  Frame f = CastWithReference(o, input, sc, cam, progress);
+  const std::array<float, 3> background = { view.background[0], view.background[1], view.background[2] };
+  Frame f = CastWithReference(o, input, sc, cam, background, progress);
   bar.Finish();
   NoteEmptyImage(o, sc, f);
-  f.img.CompositeOver({ view.background[0], view.background[1], view.background[2] });
+  f.img.CompositeOver(background);
   art::WriteImage(f.img, view.output);
 
   if (o.Flag("json"))

@@ -134,3 +134,44 @@ TEST(ImageMetrics, NonFiniteValuesAreAnError)
     EXPECT_THROW(art::SSIM(a, b), art::Error);
   }
 }
+
+// Rendered images are compared as written: composited over their background, over RGB, and
+// over the object's pixels alone. A 10 x 10 black frame holding a 2 x 5 patch that differs by
+// 0.1 in every channel: whole-frame RMSE sqrt(10/100) * 0.1, object RMSE 0.1 over 10 pixels.
+TEST(ImageMetrics, ObjectFiguresCountOnlyTheCoveredPixels)
+{
+  Image a(10, 10, { 0.f, 0.f, 0.f, 0.f }), b(10, 10, { 0.f, 0.f, 0.f, 0.f });
+  for (int y = 3; y < 5; ++y)
+  {
+    for (int x = 2; x < 7; ++x)
+    {
+      float* pa = a.Pixel(x, y);
+      float* pb = b.Pixel(x, y);
+      pa[0] = pa[1] = pa[2] = 0.3f, pa[3] = 1.f;
+      pb[0] = pb[1] = pb[2] = 0.4f, pb[3] = 1.f;
+    }
+  }
+  const auto r = art::CompareOnBackground(a, b);
+  EXPECT_EQ(r.channels, 3);
+  EXPECT_EQ(r.objectPixels, 10);
+  EXPECT_NEAR(r.rmse, 0.1 * std::sqrt(0.1), 1e-7);
+  EXPECT_NEAR(r.objectRmse, 0.1, 1e-7);
+  EXPECT_NEAR(r.objectPsnr, 20.0, 1e-5);
+  EXPECT_NEAR(r.psnr, 30.0, 1e-5);
+  EXPECT_LT(r.objectSsim, r.ssim); // the empty frame around it agrees perfectly
+  // On a white background the transparent pixels are white, and the patch stays the object.
+  const auto w = art::CompareOnBackground(a, b, { 1.f, 1.f, 1.f });
+  EXPECT_EQ(w.objectPixels, 10);
+  EXPECT_NEAR(w.objectRmse, 0.1, 1e-7);
+}
+
+// Half-covered pixels are composited before they are compared, as in the written image: a
+// premultiplied 0.2 at alpha 0.5 over a background of 0.2 is 0.2 + 0.5 * 0.2 = 0.3.
+TEST(ImageMetrics, CompositesOverTheBackgroundFirst)
+{
+  Image a(4, 4, { 0.2f, 0.2f, 0.2f, 0.5f });
+  Image b(4, 4, { 0.3f, 0.3f, 0.3f, 1.f });
+  const auto r = art::CompareOnBackground(a, b, { 0.2f, 0.2f, 0.2f });
+  EXPECT_NEAR(r.rmse, 0.0, 1e-7);
+  EXPECT_EQ(r.objectPixels, 16);
+}

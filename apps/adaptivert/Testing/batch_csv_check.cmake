@@ -1,0 +1,32 @@
+# The results.csv of the gzipped-NIfTI job (BatchTests.cmake): its frames are named after the
+# file without ".nii.gz", and the reduced frame has a reduction time and object figures (its 24
+# voxels reduce to themselves, so its PSNR columns are empty: infinite).
+cmake_minimum_required(VERSION 3.20) # list() keeps the CSV's empty fields
+file(STRINGS "${CSV}" lines)
+list(GET lines 0 header)
+string(REPLACE "," ";" columns "${header}")
+foreach(_c reduce_seconds psnr_db ssim object_psnr_db object_ssim)
+  list(FIND columns ${_c} _i)
+  if(_i LESS 0)
+    message(FATAL_ERROR "results.csv has no column ${_c}: ${header}")
+  endif()
+  set(_col_${_c} ${_i})
+endforeach()
+set(_found 0)
+foreach(_line IN LISTS lines)
+  if(_line MATCHES "^brain_c000_s00,")
+    string(REPLACE "," ";" _f "${_line}")
+    foreach(_c reduce_seconds ssim object_ssim) # PSNR is empty (infinite) when the images agree
+      list(GET _f ${_col_${_c}} _v)
+      if(NOT _v MATCHES "^[0-9]")
+        message(FATAL_ERROR "frame brain_c000_s00 has no ${_c} ('${_v}'): ${_line}")
+      endif()
+    endforeach()
+    set(_found 1)
+  elseif(_line MATCHES "\\.nii_c")
+    message(FATAL_ERROR "a frame is named after brain.nii: ${_line}")
+  endif()
+endforeach()
+if(NOT _found)
+  message(FATAL_ERROR "no frame brain_c000_s00 in results.csv: ${lines}")
+endif()
