@@ -212,3 +212,24 @@ add_test(NAME render.full_tets_memory COMMAND bash "${_mem}" "${_w}" "450 450 45
   "big.mhd: full-resolution tets of this volume (452594245) need about 72.4 GB, more than the .* GB of memory available; reduce it first (--tets N"
   "${_w}/big.png" -- "$<TARGET_FILE:adaptivert>" render "${_w}/big.mhd" -o "${_w}/big.png" --size 32x32)
 set_tests_properties(render.full_tets_memory PROPERTIES LABELS "unit" TIMEOUT 120)
+# A mesh renders without scoring itself (it computed its own exact render and printed "PSNR inf
+# dB" or a figure of how it is drawn, not of what it models); --error names the reference: the
+# source volume's voxels, an image of the same size, or 'exact'.
+art_expect_test(cli.render_mesh_no_self_reference EXIT 0 STDOUT "crossed per thread output"
+  ARGS render "${_tetdata}/two-tets.vtu" -o "${_tmp}/two-tets-noref.png" --size 32x24 --tf grey-ramp)
+art_expect_test(cli.render_mesh_error_volume_mesh EXIT 0 STDOUT "output .*mesh-err.vtu"
+  ARGS reduce "${_ct}" "${_tmp}/mesh-err.vtu" --tets 3000 --quiet)
+set_tests_properties(cli.render_mesh_error_volume_mesh PROPERTIES FIXTURES_SETUP render_mesh_err)
+art_expect_test(cli.render_mesh_error_volume EXIT 0
+  STDOUT "reference +voxel ray caster on .*ct-head-128.mha.*error +PSNR [1-9][0-9]\\.[0-9]+ dB.*object: PSNR [1-9][0-9]\\.[0-9]+ dB"
+  ARGS render "${_tmp}/mesh-err.vtu" -o "${_tmp}/mesh-err.png" --size 32x32 --error "${_ct}")
+set_tests_properties(cli.render_mesh_error_volume PROPERTIES FIXTURES_REQUIRED render_mesh_err)
+art_expect_test(cli.render_mesh_error_exact EXIT 0 STDOUT "reference +exact rule on the mesh.*error +PSNR"
+  ARGS render "${_tetdata}/two-tets.vtu" -o "${_tmp}/two-tets-exact.png" --size 32x24 --tf grey-ramp --ert 0.5 --error exact)
+art_expect_test(cli.render_mesh_error_image_size EXIT 1 ONE_LINE_STDERR
+  STDERR "levels.png: is 64x48, the render 32x24: give --size to match the reference image"
+  ARGS render "${_tetdata}/two-tets.vtu" -o "${_tmp}/two-tets-img.png" --size 32x24 --error "${_img}/levels.png" -q)
+art_expect_test(cli.render_mesh_error_image EXIT 0 STDOUT "reference +image .*levels.png.*error +PSNR"
+  ARGS render "${_tetdata}/two-tets.vtu" -o "${_tmp}/two-tets-img8.png" --size 64x48 --error "${_img}/levels.png")
+art_expect_test(cli.render_error_and_no_error EXIT 2 ONE_LINE_STDERR STDERR "--error and --no-error exclude each other"
+  ARGS render "${_ct}" -o "${_tmp}/x.png" --no-error --error exact)

@@ -88,6 +88,10 @@ void Declare(cli::Options& o)
     "(batch does this for its frames)");
   o.Add("reference", 0, "", "render the full-resolution voxel reference instead");
   o.Add("no-error", 0, "", "skip the reference render and the error figures");
+  o.Add("error", 0, "REF",
+    "the error figures against REF: an image file, a volume (its voxel reference, same view and transfer "
+    "function), or 'exact' (this mesh with the exact rule and no early termination); a volume's default is "
+    "its own voxel reference, a mesh has none");
 }
 
 // A preset's opacities are per unit distance: 1 mm on CT in HU of mm voxels, else the data's sample spacing;
@@ -370,11 +374,13 @@ struct Frame
   art::Image img, ref;
   art::RenderStats st, rst;
   bool haveRef = false;
+  std::string refLabel;
   art::ImageMetricsResult m;
 };
 
-// Casts the scene and, unless --no-error, its reference: the voxels for a volume, the exact rule
-// without early termination for a mesh rendered otherwise.
+// Casts the scene and, unless --no-error, its reference: --error's (an image, a volume's voxels,
+// or the exact rule on the mesh), else a volume's own voxels. A mesh has no reference unless
+// asked for one: its own exact render would score how it is drawn, not what it models.
 Frame CastWithReference(const cli::Options& o, const std::string& input, const Scene& sc, const art::Camera& cam,
   const std::array<float, 3>& background, art::Progress& progress)
 {
@@ -393,20 +399,41 @@ Frame CastWithReference(const cli::Options& o, const std::string& input, const S
   {
     return f;
   }
-  if (sc.volume)
+  const std::string ref = o.Has("error") ? o.Get("error") : sc.volume ? std::string() : std::string("none");
+  if (ref.empty() && sc.volume)
   {
     f.rst = art::VoxelReferenceCaster::FromVTK(sc.volume, sc.settings, input).Render(cam, f.ref, &progress);
-    f.haveRef = true;
+    f.refLabel = "voxel ray caster";
   }
-  else if (sc.settings.mode == art::RenderSettings::Mode::Composite &&
-    (sc.settings.rule == art::RenderSettings::Rule::Trapezoid || sc.settings.earlyTermination < 1))
+  else if (ref == "exact")
   {
-    art::RenderSettings exact = sc.settings; // a mesh's reference: the exact rule on that mesh
+    art::RenderSettings exact = sc.settings; // the mesh's own reference: exact rule, no ERT
     exact.rule = art::RenderSettings::Rule::Exact;
     exact.earlyTermination = 2.0;
     f.rst = art::TetRayCaster(sc.mesh, exact).Render(cam, f.ref, &progress);
-    f.haveRef = true;
+    f.refLabel = "exact rule on the mesh";
   }
+  else if (ref != "none" && art::IsImageExtension(ref))
+  {
+    f.ref = art::ReadImage(ref);
+    art::RequireFinite(f.ref, ref);
+    if (f.ref.Width() != f.img.Width() || f.ref.Height() != f.img.Height())
+    {
+      throw art::Error("is " + std::to_string(f.ref.Width()) + "x" + std::to_string(f.ref.Height()) +
+          ", the render " + std::to_string(f.img.Width()) + "x" + std::to_string(f.img.Height()) +
+          ": give --size to match the reference image",
+        ref);
+    }
+    f.refLabel = "image " + ref;
+  }
+  else if (ref != "none")
+  {
+    auto volume = art::LoadVolume(ref, o.Get("array"));
+    art::RequireOneComponent(volume, ref);
+    f.rst = art::VoxelReferenceCaster::FromVTK(volume, sc.settings, ref).Render(cam, f.ref, &progress);
+    f.refLabel = "voxel ray caster on " + ref;
+  }
+  f.haveRef = ref != "none";
   if (f.haveRef)
   {
     f.m = art::CompareOnBackground(f.img, f.ref, background); // as the images are written
@@ -498,7 +525,7 @@ void PrintText(const cli::Options& o, const std::string& input, const cli::View&
   }
   if (f.haveRef)
   {
-    std::printf("reference    %s: %.3f s\n", sc.volume ? "voxel ray caster" : "exact rule on the mesh", f.rst.seconds);
+    std::printf("reference    %s: %.3f s\n", f.refLabel.c_str(), f.rst.seconds);
     std::printf("error        PSNR %.2f dB, SSIM %.4f, RMSE %.5f (RGB over the background, against the reference)\n",
       f.m.psnr, f.m.ssim, f.m.rmse);
     std::printf("             object: PSNR %.2f dB, SSIM %.4f, RMSE %.5f (the %lld pixels either image covers)\n",
@@ -516,6 +543,11 @@ int Run(const cli::Options& o, const std::string& input)
   j.Set("input", input);
 
   cli::CheckTransferFunctionName(o.Get("tf"));
+  if (o.Has("error") && (o.Flag("no-error") || o.Flag("reference")))
+  {
+    throw cli::UsageError(std::string("--error and ") + (o.Flag("no-error") ? "--no-error" : "--reference") +
+      " exclude each other");
+  }
   Scene sc;
   const auto t0 = std::chrono::steady_clock::now();
   if (art::KindOf(input) == art::DataKind::Volume)
