@@ -233,3 +233,10 @@ art_expect_test(cli.render_mesh_error_image EXIT 0 STDOUT "reference +image .*le
   ARGS render "${_tetdata}/two-tets.vtu" -o "${_tmp}/two-tets-img8.png" --size 64x48 --error "${_img}/levels.png")
 art_expect_test(cli.render_error_and_no_error EXIT 2 ONE_LINE_STDERR STDERR "--error and --no-error exclude each other"
   ARGS render "${_ct}" -o "${_tmp}/x.png" --no-error --error exact)
+# --roll and --view-up turn the picture as a camera does (checked against the plain render turned).
+art_add_python_test(cli.render_view_up_roll "${CMAKE_CURRENT_LIST_DIR}/test_view_up_roll.py")
+art_expect_test(cli.render_view_up_along_view EXIT 2 ONE_LINE_STDERR
+  STDERR "--view-up 0,1,0 is along the view direction; give one across it"
+  ARGS render "${_ct}" -o "${_tmp}/x.png" --view-up 0,1,0)
+art_expect_test(cli.render_view_up_zero EXIT 2 ONE_LINE_STDERR
+  STDERR "--view-up expects a non-zero direction X,Y,Z, got '0,0,0'" ARGS render "${_ct}" -o "${_tmp}/x.png" --view-up 0,0,0)

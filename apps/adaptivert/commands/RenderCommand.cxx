@@ -44,7 +44,7 @@ View ViewFromOptions(const Options& o)
   return v;
 }
 
-static double Zoom(const Options& o)
+double Zoom(const Options& o)
 {
   const double zoom = o.GetDouble("zoom");
   if (!(zoom > 0 && std::isfinite(zoom)))
@@ -54,13 +54,54 @@ static double Zoom(const Options& o)
   return zoom;
 }
 
+art::Vec3 ParseDirection(const std::string& text, const char* option)
+{
+  std::istringstream in(text);
+  art::Vec3 v;
+  char c1 = 0, c2 = 0;
+  if (!(in >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || !(in >> std::ws).eof() ||
+    !art::IsFinite(v) || !(art::Length(v) > 0))
+  {
+    throw UsageError(std::string(option) + " expects a non-zero direction X,Y,Z, got '" + text + "'");
+  }
+  return art::Normalize(v);
+}
+
+void ApplyViewUp(const Options& o, vtkCamera* cam)
+{
+  if (!o.Has("view-up"))
+  {
+    return;
+  }
+  const art::Vec3 up = ParseDirection(o.Get("view-up"), "--view-up");
+  const art::Vec3 dir = art::Normalize(art::Vec3(cam->GetDirectionOfProjection()));
+  if (std::abs(art::Dot(up, dir)) > 0.999)
+  {
+    throw UsageError("--view-up " + o.Get("view-up") + " is along the view direction; give one across it");
+  }
+  cam->SetViewUp(up.x, up.y, up.z);
+  cam->OrthogonalizeViewUp();
+}
+
+double Roll(const Options& o)
+{
+  const double roll = o.GetDouble("roll");
+  if (!std::isfinite(roll))
+  {
+    throw UsageError("--roll expects degrees, got '" + o.Get("roll") + "'");
+  }
+  return roll;
+}
+
 void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam)
 {
   art::Camera::DefaultView(cam, bounds);
+  ApplyViewUp(o, cam);
   cam->SetParallelProjection(o.Flag("parallel"));
   const View view = ViewFromOptions(o);
   art::Camera::Frame(cam, bounds, o.GetDouble("azimuth"), o.GetDouble("elevation"), Zoom(o),
     double(view.width) / double(view.height));
+  cam->Roll(Roll(o));
 }
 
 // The tet renderer's options that reduce a volume before casting (or cast its voxels): a tet mesh
@@ -123,6 +164,9 @@ void Declare(cli::Options& o)
   o.Add("azimuth", 0, "DEG", "rotate the camera about the view-up axis", "0");
   o.Add("elevation", 0, "DEG", "rotate the camera up over the focal point", "0");
   o.Add("zoom", 0, "F", "zoom factor (>1 is closer)", "1");
+  o.Add("view-up", 0, "X,Y,Z", "the direction that is up in the image before --azimuth and --elevation (default: +z, "
+    "or +y for data flat in z)");
+  o.Add("roll", 0, "DEG", "turn the image about the view direction, after --azimuth and --elevation", "0");
   o.Add("parallel", 0, "", "parallel instead of perspective projection");
   o.Add("background", 0, "R,G,B", "background colour", "0,0,0");
   for (const auto& r : cli::Renderers())
@@ -163,14 +207,19 @@ int Run(const cli::Options& o)
     throw cli::UsageError("needs exactly one INPUT");
   }
   const std::string input = o.Positional()[0];
-  cli::Zoom(o); // a usage error before any loading
+  cli::Zoom(o); // usage errors before any loading
+  cli::Roll(o);
+  if (o.Has("view-up"))
+  {
+    cli::ParseDirection(o.Get("view-up"), "--view-up");
+  }
   cli::ViewFromOptions(o);
   const art::DataKind kind = art::KindOf(input);
   {
     // An output that cannot be written (a folder that does not exist or is read-only, a folder's
     // name) is said before loading and reducing: it was said at the end, after a minute of
-    // reducing a large volume. The probe's temporary file is removed as it goes.
-    art::AtomicFile probe(o.Get("output"));
+    // reducing a large volume. The trial file is removed as it goes.
+    art::AtomicFile trial(o.Get("output"));
   }
   for (const auto& r : cli::Renderers())
   {

@@ -5,6 +5,7 @@
 #define adaptivert_Render_h
 
 #include "Box3.h"
+#include "Vec3.h"
 #include "DataLoader.h"
 #include "cli/Options.h"
 
@@ -45,8 +46,17 @@ struct View
 };
 View ViewFromOptions(const Options& o);
 /// Frames `bounds` with the shared camera options. The default view looks along +y with +z up
-/// (the anterior view of a scan in patient coordinates), which also suits most scenes.
+/// (the anterior view of a scan in patient coordinates), which also suits most scenes;
+/// --view-up replaces the up direction, --roll turns the image last.
 void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam);
+/// --view-up applied to `cam` (kept square to its view direction); nothing without it.
+void ApplyViewUp(const Options& o, vtkCamera* cam);
+/// --roll in degrees.
+double Roll(const Options& o);
+/// A unit direction from "X,Y,Z"; a usage error naming `option` unless finite and non-zero.
+art::Vec3 ParseDirection(const std::string& text, const char* option);
+/// --zoom, positive and finite.
+double Zoom(const Options& o);
 } // namespace cli
 
 #endif

@@ -120,12 +120,17 @@ void SetupSurfaceCamera(const cli::Options& o, const art::Box3& bounds, const ar
   }
   // The angle is set before framing, which zooms by narrowing it (setting it after undid --zoom).
   vcam->SetViewAngle(angle);
-  cli::SetupCamera(o, bounds, vcam);
   if (!o.Has("camera-position"))
   {
+    cli::SetupCamera(o, bounds, vcam);
     return;
   }
-  vcam->SetViewAngle(angle); // zoomed once below, not twice
+  const double zoom = cli::Zoom(o), azimuth = o.GetDouble("azimuth"), elevation = o.GetDouble("elevation");
+  if (!std::isfinite(azimuth) || !std::isfinite(elevation))
+  {
+    throw cli::UsageError("--azimuth and --elevation expect finite angles");
+  }
+  vcam->SetParallelProjection(o.Flag("parallel"));
   vcam->SetParallelScale(std::max(0.5 * bounds.Diagonal(), 1e-12));
   const art::Vec3 p = ParseVec(o.Get("camera-position"), "--camera-position") - shift;
   const art::Vec3 f = o.Has("focal-point") ? ParseVec(o.Get("focal-point"), "--focal-point") - shift : bounds.Center();
@@ -141,10 +146,12 @@ void SetupSurfaceCamera(const cli::Options& o, const art::Box3& bounds, const ar
   const bool alongZ = std::abs(dir.z) > 0.999;
   vcam->SetViewUp(0, alongZ ? (dir.z < 0 ? 1 : -1) : 0, alongZ ? 0 : 1);
   vcam->OrthogonalizeViewUp();
-  vcam->Azimuth(o.GetDouble("azimuth"));
-  vcam->Elevation(o.GetDouble("elevation"));
+  cli::ApplyViewUp(o, vcam);
+  vcam->Azimuth(azimuth);
+  vcam->Elevation(elevation);
   vcam->OrthogonalizeViewUp();
-  vcam->Zoom(o.GetDouble("zoom"));
+  vcam->Zoom(zoom);
+  vcam->Roll(cli::Roll(o));
 }
 
 art::SurfaceTracerSettings TracerSettings(const cli::Options& o, vtkCamera* vcam, const art::Vec3& shift)

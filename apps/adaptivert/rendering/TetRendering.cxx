@@ -309,8 +309,9 @@ void ReduceVolume(const cli::Options& o, const std::string& input, Scene& sc, ar
 }
 #endif
 
-// A volume input: its scalars, transfer function and (unless --reference) its tets.
-void LoadVolumeScene(const cli::Options& o, const std::string& input, Scene& sc, art::Progress& progress, cli::Json& j)
+// A volume input: its scalars and transfer function; its tets come after the camera is set up
+// (MakeVolumeTets), so a view that cannot be set up is said before a long reduction.
+void LoadVolumeScene(const cli::Options& o, const std::string& input, Scene& sc)
 {
   sc.volume = art::LoadVolume(input, o.Get("array")); // it has scalars
   art::RequireOneComponent(sc.volume, input);
@@ -322,6 +323,11 @@ void LoadVolumeScene(const cli::Options& o, const std::string& input, Scene& sc,
       input);
   }
   sc.settings = MakeSettings(o, MakeTF(o, sc.volume, sc.range[0], sc.range[1]));
+}
+
+// The volume's tets (unless --reference): reduced with --tets / --max-error, else full resolution.
+void MakeVolumeTets(const cli::Options& o, const std::string& input, Scene& sc, art::Progress& progress, cli::Json& j)
+{
   if (o.Flag("reference"))
   {
     return;
@@ -550,31 +556,28 @@ int Run(const cli::Options& o, const std::string& input)
   }
   Scene sc;
   const auto t0 = std::chrono::steady_clock::now();
+  art::Box3 bounds;
   if (art::KindOf(input) == art::DataKind::Volume)
   {
-    LoadVolumeScene(o, input, sc, progress, j);
-  }
-  else
-  {
-    LoadMeshScene(o, input, sc);
-  }
-  sc.buildSeconds = Seconds(t0);
-  NoteTransparentTF(sc);
-
-  art::Box3 bounds;
-  if (sc.volume)
-  {
+    LoadVolumeScene(o, input, sc);
     double b[6];
     sc.volume->GetBounds(b);
     bounds = art::Box3::FromBounds(b);
   }
   else
   {
+    LoadMeshScene(o, input, sc);
     bounds = sc.mesh.Bounds();
   }
   vtkNew<vtkCamera> vcam;
   cli::SetupCamera(o, bounds, vcam);
   const art::Camera cam = art::Camera::FromVTK(vcam, view.width, view.height);
+  if (sc.volume)
+  {
+    MakeVolumeTets(o, input, sc, progress, j);
+  }
+  sc.buildSeconds = Seconds(t0);
+  NoteTransparentTF(sc);
 
   const std::array<float, 3> background = { view.background[0], view.background[1], view.background[2] };
   Frame f = CastWithReference(o, input, sc, cam, background, progress);
