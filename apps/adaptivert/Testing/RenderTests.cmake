@@ -240,3 +240,13 @@ art_expect_test(cli.render_view_up_along_view EXIT 2 ONE_LINE_STDERR
   ARGS render "${_ct}" -o "${_tmp}/x.png" --view-up 0,1,0)
 art_expect_test(cli.render_view_up_zero EXIT 2 ONE_LINE_STDERR
   STDERR "--view-up expects a non-zero direction X,Y,Z, got '0,0,0'" ARGS render "${_ct}" -o "${_tmp}/x.png" --view-up 0,0,0)
+# --save-mesh keeps the reduced mesh that was rendered (it was lost with the image); usage errors
+# come before anything is loaded.
+add_test(NAME cli.render_save_mesh COMMAND ${CMAKE_COMMAND} "-DART=$<TARGET_FILE:adaptivert>" "-DDATA=${_ct}"
+  "-DOUT=${ART_TEST_OUTPUT}/save-mesh" -P "${CMAKE_CURRENT_LIST_DIR}/save_mesh_check.cmake")
+set_tests_properties(cli.render_save_mesh PROPERTIES LABELS unit)
+art_expect_test(cli.render_save_mesh_needs_reduction EXIT 2 ONE_LINE_STDERR
+  STDERR "--save-mesh writes the reduced mesh: give --tets N or --max-error E"
+  ARGS render "${_ct}" -o "${_tmp}/x.png" --save-mesh "${_tmp}/x.vtu")
+art_expect_test(cli.render_save_mesh_vtu EXIT 2 ONE_LINE_STDERR STDERR "--save-mesh writes a .vtu, got '.*x.vtk'"
+  ARGS render "${_ct}" -o "${_tmp}/x.png" --tets 100 --save-mesh "${_tmp}/x.vtk")

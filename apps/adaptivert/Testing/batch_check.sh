@@ -63,5 +63,5 @@ awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "psnr_db") p = i; next }
   || fail "PSNR missing or implausible: $(cat "$csv")"
 head -c 8 "$out/speed_accuracy.png" | od -c | grep -q "P   N   G" || fail "chart is not a PNG"
 # 4. The 6 reduced frames (3 cameras x 2 budgets) reduced the volume once per budget.
-[ "$(find "$out/mesh-cache" -name '*.artmesh' | wc -l)" -eq 2 ] || fail "mesh cache: $(ls "$out/mesh-cache")"
+[ "$(find "$out/mesh-cache" -name '*.vtu' | wc -l)" -eq 2 ] || fail "mesh cache: $(ls "$out/mesh-cache")"
 echo "batch: resume, sharing and results all correct ($kept kept, $now rendered after the kill; $n1 + $n2 shared)"

@@ -7,7 +7,7 @@ rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 vol=$src/data/ct-head-128.mha cache=$work/cache
 render() { "$art" render "$1" -o "$work/$2.png" --size 64x64 --tets 2000 --no-error --mesh-cache "$cache" "${@:3}"; }
-entries() { find "$cache" -name '*.artmesh' | wc -l; }
+entries() { find "$cache" -name '*.vtu' | wc -l; }
 
 render "$vol" first > "$work/first.txt"
 grep -q "from the mesh cache" "$work/first.txt" && fail "first render came from the cache"
@@ -35,7 +35,7 @@ printf '\x00' | dd of="$work/ball-copy.mha" bs=1 seek=$(($(stat -c %s "$work/bal
 render "$work/ball-copy.mha" edited --tets 300 > "$work/edited.txt"
 grep -q "from the mesh cache" "$work/edited.txt" && fail "edited voxels came from the cache"
 # A damaged entry (truncated) is a miss and is written again whole.
-for f in "$cache"/*.artmesh; do truncate -s 1000 "$f"; done
+for f in "$cache"/*.vtu; do truncate -s 1000 "$f"; done
 render "$vol" damaged > "$work/damaged.txt" || fail "a damaged entry failed the render"
 grep -q "from the mesh cache" "$work/damaged.txt" && fail "a damaged entry was used"
 cmp -s "$work/first.png" "$work/damaged.png" || fail "the render after a damaged entry differs"
@@ -51,4 +51,8 @@ cmp -s "$work/first.png" "$work/nocache.png" || fail "the render without its cac
 "$art" render "$src/modules/TetRayCast/Testing/Data/two-tets.vtu" -o "$work/m.png" --mesh-cache "$cache" \
   2> "$work/mesh.txt" && fail "a mesh with --mesh-cache was accepted"
 grep -q "does not apply to a mesh" "$work/mesh.txt" || fail "mesh input: $(cat "$work/mesh.txt")"
+# An entry is a .vtu any VTK reader opens: info reads it as a tet mesh of its tets.
+entry=$(ls -t "$cache"/*.vtu | head -n 1) # the one rewritten after the damage
+"$art" info "$entry" > "$work/entry.txt" || fail "info cannot read a cache entry: $entry"
+grep -q "vtkTetra" "$work/entry.txt" || fail "a cache entry is no tet mesh: $(cat "$work/entry.txt")"
 echo "mesh cache: hits, misses on other voxels and budgets, damaged entries rewritten"

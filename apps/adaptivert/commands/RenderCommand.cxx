@@ -109,7 +109,7 @@ void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam)
 static bool VolumeOnly(const std::string& option)
 {
   static const std::set<std::string> only = { "tets", "max-error", "refinement", "relocate", "no-relocate", "plain-reduction",
-    "mesh-cache", "reference" };
+    "mesh-cache", "reference", "save-mesh" };
   return only.count(option) > 0;
 }
 

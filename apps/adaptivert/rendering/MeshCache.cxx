@@ -1,18 +1,28 @@
 #include "rendering/MeshCache.h"
 
 #ifdef ART_HAVE_Reduction
-#include "AtomicFile.h"
+#include "DataLoader.h"
 #include "Error.h"
+#include "ReducerVTK.h"
 #include "cli/Subprocess.h"
+
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
 
 #include <dlfcn.h>
 
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
-#include <iterator>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -21,8 +31,8 @@ namespace cli
 {
 namespace
 {
-constexpr char Magic[8] = { 'A', 'R', 'T', 'M', 'E', 'S', 'H', '1' };
-constexpr char End[4] = { 'E', 'N', 'D', '!' };
+// Field data naming what the entry was made from; a file without it, or with another, is a miss.
+constexpr const char* KeyArray = "adaptivert_mesh_cache_key";
 
 // Two independent 64-bit multiply-rotate lanes over the samples' bytes: not cryptographic, only
 // so that any edit of a volume changes its key.
@@ -68,51 +78,75 @@ std::string FileOf(const void* symbol)
   return dladdr(symbol, &info) && info.dli_fname ? FileStamp(info.dli_fname) : std::string("?");
 }
 
-template <class T>
-void Put(std::string& out, const T& v)
+double Field(vtkFieldData* fd, const char* name, double fallback = 0.0)
 {
-  out.append(reinterpret_cast<const char*>(&v), sizeof(T));
+  vtkDataArray* a = fd->GetArray(name);
+  return a && a->GetNumberOfTuples() == 1 ? a->GetTuple1(0) : fallback;
 }
 
-template <class T>
-void PutVector(std::string& out, const std::vector<T>& v)
+void AddField(vtkFieldData* fd, const char* name, double v)
 {
-  Put(out, static_cast<std::uint64_t>(v.size()));
-  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->InsertNextValue(v);
+  fd->AddArray(a);
 }
 
-// Reads what Put wrote; any read past the end marks the whole file bad.
-struct Reader
+// The reduced mesh back from the grid ToUnstructuredGrid made (and Store added to): false when
+// anything is missing or out of place.
+bool FromGrid(vtkUnstructuredGrid* g, art::ReducedMesh& m)
 {
-  const std::string& s;
-  std::size_t at = 0;
-  bool ok = true;
-  template <class T>
-  void Get(T& v)
+  const vtkIdType nv = g->GetNumberOfPoints(), nt = g->GetNumberOfCells();
+  vtkDataArray* values = g->GetPointData()->GetScalars();
+  vtkDataArray* rms = g->GetCellData()->GetArray("approximation_error");
+  vtkDataArray* max = g->GetCellData()->GetArray("max_error");
+  if (!values || values->GetNumberOfComponents() != 1 || !rms || !max)
   {
-    if (!ok || s.size() - at < sizeof(T))
-    {
-      ok = false;
-      return;
-    }
-    std::memcpy(&v, s.data() + at, sizeof(T));
-    at += sizeof(T);
+    return false;
   }
-  template <class T>
-  void GetVector(std::vector<T>& v)
+  m.Points.resize(3 * static_cast<std::size_t>(nv));
+  m.Values.resize(static_cast<std::size_t>(nv));
+  for (vtkIdType i = 0; i < nv; ++i)
   {
-    std::uint64_t n = 0;
-    Get(n);
-    if (!ok || n > (s.size() - at) / sizeof(T))
-    {
-      ok = false;
-      return;
-    }
-    v.resize(n);
-    std::memcpy(v.data(), s.data() + at, n * sizeof(T));
-    at += n * sizeof(T);
+    g->GetPoint(i, &m.Points[3 * static_cast<std::size_t>(i)]);
+    m.Values[static_cast<std::size_t>(i)] = values->GetTuple1(i);
   }
-};
+  m.Tets.resize(4 * static_cast<std::size_t>(nt));
+  m.TetRms.resize(static_cast<std::size_t>(nt));
+  m.TetMax.resize(static_cast<std::size_t>(nt));
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType t = 0; t < nt; ++t)
+  {
+    g->GetCellPoints(t, ids);
+    if (g->GetCellType(t) != VTK_TETRA || ids->GetNumberOfIds() != 4)
+    {
+      return false;
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      m.Tets[4 * static_cast<std::size_t>(t) + k] = static_cast<int>(ids->GetId(k));
+    }
+    m.TetRms[static_cast<std::size_t>(t)] = rms->GetTuple1(t);
+    m.TetMax[static_cast<std::size_t>(t)] = max->GetTuple1(t);
+  }
+  vtkFieldData* fd = g->GetFieldData();
+  m.ScalarName = values->GetName() ? values->GetName() : "";
+  m.Rms = Field(fd, "rms_error");
+  m.Max = Field(fd, "max_error");
+  m.Weighted = Field(fd, "weighted") != 0.0;
+  m.WeightedRms = Field(fd, "weighted_rms_error");
+  m.WeightedMax = Field(fd, "weighted_max_error");
+  m.Range[0] = Field(fd, "scalar_range_min");
+  m.Range[1] = Field(fd, "scalar_range_max");
+  m.SourceSpacing = Field(fd, "source_spacing", 1.0);
+  m.BuildSeconds = Field(fd, "build_seconds");
+  m.TargetTets = static_cast<long long>(Field(fd, "target_tets"));
+  m.TargetError = Field(fd, "target_error", -1.0);
+  m.TargetReached = Field(fd, "target_reached", 1.0) != 0.0;
+  m.RefinementLevels = static_cast<int>(Field(fd, "refinement_levels"));
+  m.SolverIterations = static_cast<int>(Field(fd, "solver_iterations"));
+  return true;
+}
 } // namespace
 
 MeshCache::MeshCache(const std::string& dir, const art::VoxelVolume& v, const art::ReducerOptions& o)
@@ -159,69 +193,52 @@ MeshCache::MeshCache(const std::string& dir, const art::VoxelVolume& v, const ar
   Hash128 kh;
   kh.Add(Key.data(), Key.size());
   std::ostringstream name;
-  name << std::hex << std::setfill('0') << std::setw(16) << kh.a << std::setw(16) << kh.b << ".artmesh";
+  name << std::hex << std::setfill('0') << std::setw(16) << kh.a << std::setw(16) << kh.b << ".vtu";
   Path = (fs::path(dir) / name.str()).string();
 }
 
 bool MeshCache::Load(art::ReducedMesh& m) const
 {
-  std::ifstream in(Path, std::ios::binary);
-  if (!in)
+  std::error_code ec;
+  if (!fs::is_regular_file(Path, ec))
   {
     return false;
   }
-  const std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  Reader r{ s };
-  char magic[8] = {};
-  r.Get(magic);
-  std::vector<char> key;
-  r.GetVector(key);
-  if (!r.ok || std::memcmp(magic, Magic, 8) != 0 || std::string(key.begin(), key.end()) != Key)
+  try
+  {
+    vtkSmartPointer<vtkUnstructuredGrid> g = art::LoadMesh(Path);
+    auto* key = vtkStringArray::SafeDownCast(g->GetFieldData()->GetAbstractArray(KeyArray));
+    art::ReducedMesh out;
+    if (!key || key->GetNumberOfValues() != 1 || key->GetValue(0) != Key || !FromGrid(g, out))
+    {
+      return false;
+    }
+    m = std::move(out);
+    return true;
+  }
+  catch (const art::Error&) // damaged or not ours: a miss, made again
   {
     return false;
   }
-  art::ReducedMesh out;
-  std::vector<char> name;
-  r.GetVector(out.Points), r.GetVector(out.Tets), r.GetVector(out.Values), r.GetVector(out.TetRms),
-    r.GetVector(out.TetMax), r.GetVector(name);
-  r.Get(out.Rms), r.Get(out.Max), r.Get(out.WeightedRms), r.Get(out.WeightedMax), r.Get(out.Range),
-    r.Get(out.SourceSpacing), r.Get(out.BuildSeconds), r.Get(out.TargetTets), r.Get(out.TargetError),
-    r.Get(out.Weighted), r.Get(out.TargetReached), r.Get(out.RefinementLevels), r.Get(out.SolverIterations);
-  char end[4] = {};
-  r.Get(end);
-  const std::size_t nv = out.Points.size() / 3;
-  bool ok = r.ok && r.at == s.size() && std::memcmp(end, End, 4) == 0 && out.Points.size() == 3 * nv &&
-    out.Values.size() == nv && out.Tets.size() % 4 == 0;
-  for (std::size_t i = 0; ok && i < out.Tets.size(); ++i)
-  {
-    ok = out.Tets[i] >= 0 && static_cast<std::size_t>(out.Tets[i]) < nv;
-  }
-  if (!ok)
-  {
-    return false;
-  }
-  out.ScalarName.assign(name.begin(), name.end());
-  m = std::move(out);
-  return true;
 }
 
 void MeshCache::Store(const art::ReducedMesh& m) const
 {
-  std::string s(Magic, 8);
-  PutVector(s, std::vector<char>(Key.begin(), Key.end()));
-  PutVector(s, m.Points), PutVector(s, m.Tets), PutVector(s, m.Values), PutVector(s, m.TetRms),
-    PutVector(s, m.TetMax), PutVector(s, std::vector<char>(m.ScalarName.begin(), m.ScalarName.end()));
-  Put(s, m.Rms), Put(s, m.Max), Put(s, m.WeightedRms), Put(s, m.WeightedMax), Put(s, m.Range),
-    Put(s, m.SourceSpacing), Put(s, m.BuildSeconds), Put(s, m.TargetTets), Put(s, m.TargetError),
-    Put(s, m.Weighted), Put(s, m.TargetReached), Put(s, m.RefinementLevels), Put(s, m.SolverIterations);
-  s.append(End, 4);
+  vtkSmartPointer<vtkUnstructuredGrid> g = art::ToUnstructuredGrid(m, true); // values in double, as fitted
+  vtkFieldData* fd = g->GetFieldData();
+  AddField(fd, "refinement_levels", m.RefinementLevels);
+  AddField(fd, "solver_iterations", m.SolverIterations);
+  vtkNew<vtkStringArray> key;
+  key->SetName(KeyArray);
+  key->InsertNextValue(Key);
+  fd->AddArray(key);
   std::error_code ec;
   fs::create_directories(fs::path(Path).parent_path(), ec);
   if (ec)
   {
     throw art::Error("cannot create the mesh cache folder: " + ec.message(), fs::path(Path).parent_path().string());
   }
-  art::WriteFileAtomic(Path, s);
+  art::SaveMesh(g, Path);
 }
 } // namespace cli
 #endif

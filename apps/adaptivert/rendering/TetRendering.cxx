@@ -1,6 +1,7 @@
 // The tet caster behind `adaptivert render` for volumes and tet meshes. A volume becomes tets
 // (reduced with --tets / --max-error when the Reduction module is built, else full resolution),
 // is cast cell by cell, and is compared with the full-resolution voxel reference render.
+#include "AtomicFile.h"
 #include "Camera.h"
 #include "cli/Command.h"
 #include "DataLoader.h"
@@ -37,6 +38,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <iomanip>
 #include <sstream>
@@ -83,6 +85,8 @@ void Declare(cli::Options& o)
   o.Add("no-relocate", 0, "", "keep the reduction's vertices on the bisection lattice (faster to reduce)");
   o.Add("plain-reduction", 0, "",
     "reduce in plain L2, not weighted by the transfer function's opacity (a few times faster on large volumes)");
+  o.Add("save-mesh", 0, "OUT.vtu",
+    "also write the reduced mesh that is rendered, as `adaptivert reduce` writes it (with --tets or --max-error)");
   o.Add("mesh-cache", 0, "DIR",
     "keep each reduced mesh in DIR and reuse it when the same voxels are reduced with the same settings "
     "(batch does this for its frames)");
@@ -289,6 +293,11 @@ void ReduceVolume(const cli::Options& o, const std::string& input, Scene& sc, ar
     }
   }
   sc.mesh = cli::ToTetMesh(r);
+  if (o.Has("save-mesh"))
+  {
+    art::SaveMesh(art::ToUnstructuredGrid(r, vv.DoubleValues), o.Get("save-mesh"));
+    j.Set("saved_mesh", o.Get("save-mesh"));
+  }
   std::ostringstream ss;
   ss << std::setprecision(4) // errors to four digits (87.34 HU); counts are integers
      << "adaptive tets (" << (r.Weighted ? "opacity-weighted " : "") << "least-squares reduction"
@@ -308,6 +317,27 @@ void ReduceVolume(const cli::Options& o, const std::string& input, Scene& sc, ar
   }
 }
 #endif
+
+// --save-mesh names a .vtu that can be written, and a reduction to write: said before loading.
+void CheckSaveMesh(const cli::Options& o)
+{
+  const std::string path = o.Get("save-mesh");
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".vtu")
+  {
+    throw cli::UsageError("--save-mesh writes a .vtu, got '" + path + "'");
+  }
+  if (!o.Has("tets") && !o.Has("max-error"))
+  {
+    throw cli::UsageError("--save-mesh writes the reduced mesh: give --tets N or --max-error E");
+  }
+  if (o.Has("output") && std::filesystem::weakly_canonical(path) == std::filesystem::weakly_canonical(o.Get("output")))
+  {
+    throw cli::UsageError("--save-mesh and -o name the same file");
+  }
+  art::AtomicFile trial(path); // its folder exists and is writable
+}
 
 // A volume input: its scalars and transfer function; its tets come after the camera is set up
 // (MakeVolumeTets), so a view that cannot be set up is said before a long reduction.
@@ -549,6 +579,10 @@ int Run(const cli::Options& o, const std::string& input)
   j.Set("input", input);
 
   cli::CheckTransferFunctionName(o.Get("tf"));
+  if (o.Has("save-mesh"))
+  {
+    CheckSaveMesh(o);
+  }
   if (o.Has("error") && (o.Flag("no-error") || o.Flag("reference")))
   {
     throw cli::UsageError(std::string("--error and ") + (o.Flag("no-error") ? "--no-error" : "--reference") +
