@@ -26,7 +26,7 @@ void AddCommonOptions(Options& o)
   o.Add("help", 'h', "", "show this help and exit");
   o.Add("threads", 0, "N", "worker threads, 0 = all cores", "0");
   o.Add("json", 0, "", "print one JSON object on stdout instead of text");
-  o.Add("quiet", 'q', "", "no progress on stderr");
+  o.Add("quiet", 'q', "", "no progress on stderr (a job running past a minute still says so once a minute)");
   o.Add("verbose", 'v', "", "show VTK's own warnings and errors too");
 }
 

@@ -10,6 +10,7 @@ ProgressBar::ProgressBar(bool quiet)
   : Quiet(quiet)
   , Tty(isatty(fileno(stderr)) != 0)
   , Start(std::chrono::steady_clock::now())
+  , LastDraw(Start)
 {
 }
 
@@ -25,13 +26,20 @@ art::Progress::Callback ProgressBar::Callback()
 
 void ProgressBar::Update(double f, const std::string& stage)
 {
-  if (Quiet)
-  {
-    return;
-  }
   f = std::clamp(f, 0.0, 1.0);
   const auto now = std::chrono::steady_clock::now();
   const double secs = std::chrono::duration<double>(now - Start).count();
+  if (Quiet)
+  {
+    // Quiet, but not silent for ever: a long job says it is alive once a minute.
+    if (now - LastDraw >= HeartbeatPeriod && now - Start >= HeartbeatPeriod)
+    {
+      LastDraw = now;
+      std::fprintf(stderr, "%s: %d%% (%.0f s)\n", stage.c_str(), static_cast<int>(f * 100.0), secs);
+      std::fflush(stderr);
+    }
+    return;
+  }
   if (Tty)
   {
     // Redraw at most 20 times a second, but always at the end of a stage.
