@@ -85,10 +85,13 @@ ViewerApp::ViewerApp(ViewerOptions options)
               "': unknown image type (use .png, .exr or .tif)",
             Impl->Opt.Script);
         }
-        art::AtomicFile probe(a.Text); // its temporary file is removed as it goes
+        art::AtomicFile trial(a.Text); // its temporary file is removed as it goes
       }
     }
   }
+  // A scripted or --screenshot run makes pictures of the data: the key help starts hidden there
+  // (a script's 'key h' shows it). Opened by hand, the viewer shows it.
+  Impl->State.Help = Impl->Opt.Script.empty() && Impl->Opt.Screenshot.empty();
   const double lo = Impl->Scene.Range[0], hi = Impl->Scene.Range[1];
   Impl->State.IsoStep = std::max((hi - lo) / 50.0, 1e-12);
   Impl->State.IsoValue = lo + 15 * Impl->State.IsoStep; // 30% of the range: bone on CT

@@ -41,7 +41,7 @@ int main(int argc, char** argv)
     {
       // A --screenshot that cannot be written (its folder missing or read-only) is said before
       // the window opens, not after the whole reduction. The trial file is removed as it goes.
-      art::AtomicFile probe(opt.Screenshot);
+      art::AtomicFile trial(opt.Screenshot);
     }
     view::ViewerApp app(opt);
     return app.Run();
