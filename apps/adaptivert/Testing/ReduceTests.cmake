@@ -41,14 +41,14 @@ art_expect_test(cli.reduce_huge_values EXIT 1
   ONE_LINE_STDERR ARGS reduce "${_bad}/huge-4x4x4.vti" "${ART_TEST_OUTPUT}/never.vtu" --tets 20)
 art_expect_test(cli.reduce_help EXIT 0 STDOUT "examples:.*adaptivert reduce" ARGS reduce --help)
 art_expect_test(cli.reduce_default_ct EXIT 0
-  STDOUT "tets +[45],[0-9][0-9][0-9] \\([0-9,]+ vertices.*error +RMS [0-9.]+, max [0-9.]+ data units.*quality +min dihedral.*time +[0-9.]+ s"
+  STDOUT "tets +[45],[0-9][0-9][0-9] \\([0-9.]+% of the voxel count\\), [0-9,]+ vertices \\([0-9.]+% of the voxels\\).*error +RMS [0-9.]+, max [0-9.]+ data units.*quality +min dihedral.*time +[0-9.]+ s"
   ARGS reduce "${_ct}" "${_out}/reduce_ct.vtu" --tets 5000)
 art_expect_test(cli.reduce_json EXIT 0 STDOUT "^\\{\"input\":.*\"tets\":8[0-9][0-9],.*\"rms_error\":"
   ARGS reduce --json --quiet "${_ct}" "${_out}/reduce_ct_json.vtu" --tets 0.1%)
 art_expect_test(cli.reduce_levels EXIT 0 STDOUT "level .*reduce_lv_500.vtu.*level .*reduce_lv_2000.vtu.*output .*reduce_lv.vtu"
   ARGS reduce "${_ct}" "${_out}/reduce_lv.vtu" --tets 4000 --levels 500,2000)
 art_expect_test(cli.reduce_edge_split EXIT 0
-  STDOUT "tets +[23],[0-9][0-9][0-9] \\([0-9,]+ vertices.*error +RMS [0-9.]+, max [0-9.]+ data units"
+  STDOUT "tets +[23],[0-9][0-9][0-9] \\([0-9.]+% of the voxel count\\), [0-9,]+ vertices.*error +RMS [0-9.]+, max [0-9.]+ data units"
   ARGS reduce "${_ct}" "${_out}/reduce_edge.vtu" --tets 3000 --refinement edge)
 art_expect_test(cli.reduce_bad_refinement EXIT 2 STDERR "--refinement is bisection or edge, got 'red'" ONE_LINE_STDERR
   ARGS reduce "${_ct}" "${_out}/x.vtu" --tets 100 --refinement red)

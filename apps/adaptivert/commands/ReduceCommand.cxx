@@ -244,8 +244,9 @@ int Run(const cli::Options& o)
   {
     std::printf("input        %s (%d x %d x %d = %s voxels, range %g .. %g)\n", in.c_str(), volume.Dims[0],
       volume.Dims[1], volume.Dims[2], Grouped(voxels).c_str(), volume.Range[0], volume.Range[1]);
-    std::printf("tets         %s (%s vertices, %.4f%% of the voxel count)\n", Grouped(f.NumberOfTets()).c_str(),
-      Grouped(f.NumberOfVertices()).c_str(), 100.0 * f.NumberOfTets() / voxels);
+    std::printf("tets         %s (%.4g%% of the voxel count), %s vertices (%.4g%% of the voxels)\n",
+      Grouped(f.NumberOfTets()).c_str(), 100.0 * f.NumberOfTets() / voxels, Grouped(f.NumberOfVertices()).c_str(),
+      100.0 * f.NumberOfVertices() / voxels);
     std::printf("error        RMS %.4g, max %.4g data units (%.3f%% / %.2f%% of the range)\n", f.Rms, f.Max,
       f.Rms * pct, f.Max * pct);
     if (f.Weighted)
