@@ -104,7 +104,7 @@ file(ARCHIVE_CREATE OUTPUT "${CMAKE_CURRENT_BINARY_DIR}/nii-job/brain.nii.gz"
 file(REMOVE "${CMAKE_CURRENT_BINARY_DIR}/nii-job/brain.nii")
 file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/nii-job/job.json"
   "{\"output\": \"frames\", \"datasets\": [\"brain.nii.gz\"], \"size\": \"16x16\", \"cameras\": {\"orbit\": 1},\n"
-  " \"settings\": [{\"tets\": 40}], \"reference\": {\"reference\": true}}\n")
+  " \"settings\": [{\"tets\": 12}], \"reference\": {\"reference\": true}}\n")
 art_expect_test(cli.batch_gz_stem EXIT 0 STDOUT "tasks +2 \\(2 rendered now, 0 failed\\)"
   ARGS batch "${CMAKE_CURRENT_BINARY_DIR}/nii-job/job.json" --quiet)
 art_clean_first(cli.batch_gz_stem "${CMAKE_CURRENT_BINARY_DIR}/nii-job/frames")

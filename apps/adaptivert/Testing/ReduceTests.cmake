@@ -85,3 +85,12 @@ add_test(NAME reduce.memory_check COMMAND bash "${_mem}" "${_w}" "650 650 650" M
   "big.mhd: reducing this volume of 650 x 650 x 650 = 274625000 voxels weighted by a transfer function's opacity needs about 7.69 GB more, more than the .* GB of memory available; crop or resample it first"
   "${_w}/big.vtu" -- "$<TARGET_FILE:adaptivert>" reduce "${_w}/big.mhd" -o "${_w}/big.vtu" --tets 1000 --tf ct-skin-bone)
 set_tests_properties(reduce.memory_check PROPERTIES LABELS "unit" TIMEOUT 120)
+# A budget at or past the full-resolution mesh (5 tets per voxel cell) makes that mesh, exact,
+# without refining towards it (60M tets on 8.7M voxels ran half an hour before it was killed).
+art_expect_test(cli.reduce_past_full_resolution EXIT 0
+  STDOUT "output .*full-res.vtu: 40 tets, 27 vertices, RMS 0 "
+  STDERR "--tets 1000 is at least the 40 tets of the full-resolution mesh \\(5 per voxel cell\\), the finest the voxels allow: that mesh is made, exact, without reducing"
+  ARGS reduce "${_bad}/rgb-3x3x3.vti" "${_out}/full-res.vtu" --array rgb:1 --tets 1000 -q)
+art_expect_test(cli.render_past_full_resolution EXIT 0
+  STDOUT "note +--tets 1000 is at least the 40 tets .*mesh +full-resolution tets \\(5 per voxel cell\\): 40 tets"
+  ARGS render "${_bad}/rgb-3x3x3.vti" -o "${_out}/full-res.png" --array rgb:1 --tets 1000 --size 16x16 --no-error -q)

@@ -1,6 +1,6 @@
 # The results.csv of the gzipped-NIfTI job (BatchTests.cmake): its frames are named after the
 # file without ".nii.gz", and the reduced frame has a reduction time and object figures (its 24
-# voxels reduce to themselves, so its PSNR columns are empty: infinite).
+# voxels draw the same picture at 16 x 16 reduced or not, so its PSNR columns are empty: infinite).
 cmake_minimum_required(VERSION 3.20) # list() keeps the CSV's empty fields
 file(STRINGS "${CSV}" lines)
 list(GET lines 0 header)

@@ -4,6 +4,7 @@
 
 #ifdef ART_HAVE_Reduction
 #include "DataLoader.h"
+#include "FullResolutionMesh.h"
 #include "Error.h"
 #include "cli/Json.h"
 #include "MeshQuality.h"
@@ -67,9 +68,10 @@ void Declare(cli::Options& o)
     "and a value fitted past its voxels into a more opaque range is clamped to theirs");
 }
 
-int Run(const cli::Options& o)
+// The output path, -o OUT as render takes it or OUT after the input ('reduce in.mha -o out.vtu'
+// was an unknown option), and the input.
+std::pair<std::string, std::string> InputAndOutput(const cli::Options& o)
 {
-  // -o OUT as render takes it, or OUT after the input ('reduce in.mha -o out.vtu' was an unknown option).
   const auto& pos = o.Positional();
   if (pos.size() != (o.Has("output") ? 1u : 2u))
   {
@@ -83,6 +85,12 @@ int Run(const cli::Options& o)
   {
     throw cli::UsageError("the output must be a .vtu file, got '" + outPath + "'");
   }
+  return { in, outPath };
+}
+
+// The options that need no data: checked before the volume is read.
+art::ReducerOptions OptionsBeforeLoading(const cli::Options& o)
+{
   if (!o.Has("tets") && !o.Has("max-error"))
   {
     throw cli::UsageError("give --tets N or --max-error E");
@@ -108,22 +116,32 @@ int Run(const cli::Options& o)
   {
     cli::CheckTransferFunctionName(o.Get("tf"));
   }
+  return opt;
+}
 
-  auto image = art::LoadVolume(in, o.Get("array"));
-  art::RequireOneComponent(image, in);
-  const art::VoxelVolume volume = art::VolumeFromImage(image, in);
-  const long long voxels = volume.NumberOfVoxels();
-  if (o.Has("tf"))
+// --tf's opacity as the fit's weights.
+void WeightByTransferFunction(const cli::Options& o, const art::VoxelVolume& volume, art::ReducerOptions& opt)
+{
+  if (!o.Has("tf"))
   {
-#ifdef ART_HAVE_TetRayCast
-    const std::string tf = o.Get("tf");
-    const art::TransferFunction f =
-      art::TransferFunction::NamesFile(tf) ? art::TransferFunction::FromFile(tf) : art::TransferFunction::Preset(tf, volume.Range[0], volume.Range[1]);
-    opt.ScalarOpacity = f.OpacityPoints();
-#else
-    throw cli::UsageError("--tf needs the TetRayCast module (transfer functions), which is not in this build");
-#endif
+    return;
   }
+#ifdef ART_HAVE_TetRayCast
+  const std::string tf = o.Get("tf");
+  const art::TransferFunction f = art::TransferFunction::NamesFile(tf)
+    ? art::TransferFunction::FromFile(tf)
+    : art::TransferFunction::Preset(tf, volume.Range[0], volume.Range[1]);
+  opt.ScalarOpacity = f.OpacityPoints();
+#else
+  (void)volume;
+  (void)opt;
+  throw cli::UsageError("--tf needs the TetRayCast module (transfer functions), which is not in this build");
+#endif
+}
+
+// --tets, --max-error and --levels, whose percentages need the volume.
+void SetBudgets(const cli::Options& o, long long voxels, art::ReducerOptions& opt)
+{
   if (o.Has("tets"))
   {
     opt.TargetTets = cli::ParseBudget(o.Get("tets"), voxels, "--tets");
@@ -162,23 +180,35 @@ int Run(const cli::Options& o)
   {
     throw cli::UsageError("--tets must be at least 6 (one box)");
   }
+}
 
-  const bool json = o.Flag("json");
-  cli::ProgressBar bar(o.Flag("quiet"));
-  art::Progress progress(bar.Callback());
-  const auto meshes = art::TetReducer(opt).Run(volume, &progress);
-  bar.Finish();
-  if (meshes.empty())
+// The meshes, coarsest first. A budget at the full resolution (`full`) is the voxels' own mesh,
+// its coarser levels reduced as usual.
+std::vector<art::ReducedMesh> Reduce(
+  const art::ReducerOptions& opt, const art::VoxelVolume& volume, bool full, art::Progress& progress)
+{
+  if (!full)
   {
-    throw art::Error("the reduction produced no mesh", in);
+    return art::TetReducer(opt).Run(volume, &progress);
   }
-  const bool asDouble = volume.DoubleValues;
-  const double range = volume.Range[1] - volume.Range[0];
-  const double pct = range > 0 ? 100.0 / range : 0.0;
-  std::vector<cli::Json> levels;
-  const std::filesystem::path op(outPath);
-  // Every mesh is checked before any file is written: a failed check must not have replaced
-  // an existing OUT.vtu already.
+  std::vector<art::ReducedMesh> meshes;
+  if (!opt.Levels.empty())
+  {
+    art::ReducerOptions coarser = opt;
+    coarser.TargetTets = *std::max_element(opt.Levels.begin(), opt.Levels.end());
+    coarser.Levels.erase(
+      std::remove(coarser.Levels.begin(), coarser.Levels.end(), coarser.TargetTets), coarser.Levels.end());
+    meshes = art::TetReducer(coarser).Run(volume, &progress);
+  }
+  meshes.push_back(art::FullResolutionMesh(volume));
+  return meshes;
+}
+
+// Writes each mesh (levels as OUT_<tets>.vtu, the last as OUT.vtu), once every one has passed its
+// conformity check: a failed check must not have replaced an existing OUT.vtu already.
+std::vector<cli::Json> WriteMeshes(const std::vector<art::ReducedMesh>& meshes, const std::string& outPath,
+  const art::VoxelVolume& volume, const art::ReducerOptions& opt, bool json)
+{
   for (const auto& m : meshes)
   {
     const auto mq = art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets());
@@ -187,6 +217,10 @@ int Run(const cli::Options& o)
       throw art::Error("internal: a reduced mesh failed its conformity check: " + mq.Summary(), outPath);
     }
   }
+  const double range = volume.Range[1] - volume.Range[0];
+  const double pct = range > 0 ? 100.0 / range : 0.0;
+  const std::filesystem::path op(outPath);
+  std::vector<cli::Json> levels;
   for (size_t i = 0; i < meshes.size(); ++i)
   {
     const auto& m = meshes[i];
@@ -194,7 +228,7 @@ int Run(const cli::Options& o)
     const std::string file = last ? outPath
                                   : (op.parent_path() / (op.stem().string() + "_" +
                                         std::to_string(m.TargetTets > 0 ? m.TargetTets : m.NumberOfTets()) + ".vtu")).string();
-    art::SaveMesh(art::ToUnstructuredGrid(m, asDouble), file);
+    art::SaveMesh(art::ToUnstructuredGrid(m, volume.DoubleValues), file);
     cli::Json j;
     j.Set("file", file).Set("tets", m.NumberOfTets()).Set("vertices", m.NumberOfVertices())
       .Set("target_tets", m.TargetTets).Set("rms_error", m.Rms).Set("max_error", m.Max)
@@ -213,16 +247,19 @@ int Run(const cli::Options& o)
         m.TargetReached ? "" : (" (" + cli::UnreachedReason(m, volume, opt.TargetTets == 0) + ")").c_str());
     }
   }
-  // With --max-error the run may stop before a level's budget: say which files were not written.
-  const std::vector<long long> missing = art::UnreachedLevels(opt.Levels, meshes);
-  for (long long b : missing)
-  {
-    std::fprintf(stderr, "adaptivert: %s: level %lld not written: the reduction stopped at %lld tets\n",
-      outPath.c_str(), b, static_cast<long long>(meshes.back().NumberOfTets()));
-  }
+  return levels;
+}
+
+void PrintSummary(const cli::Options& o, const std::string& in, const std::string& outPath,
+  const art::VoxelVolume& volume, const std::vector<art::ReducedMesh>& meshes, const std::vector<cli::Json>& levels,
+  const std::vector<long long>& missing, const std::string& note)
+{
   const auto& f = meshes.back();
   const auto q = art::MeasureQuality(f.Points.data(), f.NumberOfVertices(), f.Tets.data(), f.NumberOfTets());
-  if (json)
+  const long long voxels = volume.NumberOfVoxels();
+  const double range = volume.Range[1] - volume.Range[0];
+  const double pct = range > 0 ? 100.0 / range : 0.0;
+  if (o.Flag("json"))
   {
     cli::Json j;
     j.Set("input", in).Set("output", outPath).Set("voxels", voxels)
@@ -232,6 +269,10 @@ int Run(const cli::Options& o)
       .Set("target_reached", f.TargetReached).Set("scalar_range", std::vector<double>{ volume.Range[0], volume.Range[1] })
       .Set("min_dihedral_degrees", q.MinDihedralDegrees).Set("min_radius_ratio", q.MinRadiusRatio)
       .Set("mean_radius_ratio", q.MeanRadiusRatio).Set("weighted", f.Weighted);
+    if (!note.empty())
+    {
+      j.Set("note", note);
+    }
     if (f.Weighted)
     {
       j.Set("weighted_rms_error", f.WeightedRms).Set("weighted_max_error", f.WeightedMax);
@@ -239,25 +280,58 @@ int Run(const cli::Options& o)
     j.Set("levels", levels);
     j.Set("levels_not_written", std::vector<double>(missing.begin(), missing.end()));
     std::printf("%s\n", j.Str().c_str());
+    return;
   }
-  else
+  std::printf("input        %s (%d x %d x %d = %s voxels, range %g .. %g)\n", in.c_str(), volume.Dims[0],
+    volume.Dims[1], volume.Dims[2], Grouped(voxels).c_str(), volume.Range[0], volume.Range[1]);
+  std::printf("tets         %s (%.4g%% of the voxel count), %s vertices (%.4g%% of the voxels)\n",
+    Grouped(f.NumberOfTets()).c_str(), 100.0 * f.NumberOfTets() / voxels, Grouped(f.NumberOfVertices()).c_str(),
+    100.0 * f.NumberOfVertices() / voxels);
+  std::printf("error        RMS %.4g, max %.4g data units (%.3f%% / %.2f%% of the range)\n", f.Rms, f.Max,
+    f.Rms * pct, f.Max * pct);
+  if (f.Weighted)
   {
-    std::printf("input        %s (%d x %d x %d = %s voxels, range %g .. %g)\n", in.c_str(), volume.Dims[0],
-      volume.Dims[1], volume.Dims[2], Grouped(voxels).c_str(), volume.Range[0], volume.Range[1]);
-    std::printf("tets         %s (%.4g%% of the voxel count), %s vertices (%.4g%% of the voxels)\n",
-      Grouped(f.NumberOfTets()).c_str(), 100.0 * f.NumberOfTets() / voxels, Grouped(f.NumberOfVertices()).c_str(),
-      100.0 * f.NumberOfVertices() / voxels);
-    std::printf("error        RMS %.4g, max %.4g data units (%.3f%% / %.2f%% of the range)\n", f.Rms, f.Max,
-      f.Rms * pct, f.Max * pct);
-    if (f.Weighted)
-    {
-      std::printf("weighted     RMS %.4g, max %.4g data units (opacity-weighted error of --tf %s)\n", f.WeightedRms,
-        f.WeightedMax, o.Get("tf").c_str());
-    }
-    std::printf("quality      min dihedral %.1f deg, radius ratio min %.3f mean %.3f, 0 inverted, conforming\n",
-      q.MinDihedralDegrees, q.MinRadiusRatio, q.MeanRadiusRatio);
-    std::printf("time         %.2f s\n", f.BuildSeconds);
+    std::printf("weighted     RMS %.4g, max %.4g data units (opacity-weighted error of --tf %s)\n", f.WeightedRms,
+      f.WeightedMax, o.Get("tf").c_str());
   }
+  std::printf("quality      min dihedral %.1f deg, radius ratio min %.3f mean %.3f, 0 inverted, conforming\n",
+    q.MinDihedralDegrees, q.MinRadiusRatio, q.MeanRadiusRatio);
+  std::printf("time         %.2f s\n", f.BuildSeconds);
+}
+
+int Run(const cli::Options& o)
+{
+  const auto [in, outPath] = InputAndOutput(o);
+  art::ReducerOptions opt = OptionsBeforeLoading(o);
+
+  auto image = art::LoadVolume(in, o.Get("array"));
+  art::RequireOneComponent(image, in);
+  const art::VoxelVolume volume = art::VolumeFromImage(image, in);
+  WeightByTransferFunction(o, volume, opt);
+  SetBudgets(o, volume.NumberOfVoxels(), opt);
+  const std::string note = opt.TargetTets > 0 ? cli::CapToFullResolution(opt.TargetTets, volume, "--tets") : "";
+  if (!note.empty() && !o.Flag("json"))
+  {
+    std::fprintf(stderr, "adaptivert: %s: %s\n", in.c_str(), note.c_str());
+  }
+
+  cli::ProgressBar bar(o.Flag("quiet"));
+  art::Progress progress(bar.Callback());
+  const std::vector<art::ReducedMesh> meshes = Reduce(opt, volume, !note.empty(), progress);
+  bar.Finish();
+  if (meshes.empty())
+  {
+    throw art::Error("the reduction produced no mesh", in);
+  }
+  const std::vector<cli::Json> levels = WriteMeshes(meshes, outPath, volume, opt, o.Flag("json"));
+  // With --max-error the run may stop before a level's budget: say which files were not written.
+  const std::vector<long long> missing = art::UnreachedLevels(opt.Levels, meshes);
+  for (long long b : missing)
+  {
+    std::fprintf(stderr, "adaptivert: %s: level %lld not written: the reduction stopped at %lld tets\n",
+      outPath.c_str(), b, static_cast<long long>(meshes.back().NumberOfTets()));
+  }
+  PrintSummary(o, in, outPath, volume, meshes, levels, missing, note);
   return cli::ExitOk;
 }
 

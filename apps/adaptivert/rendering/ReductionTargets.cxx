@@ -1,4 +1,8 @@
 #include "rendering/ReductionTargets.h"
+
+#ifdef ART_HAVE_Reduction
+#include "FullResolutionMesh.h"
+#endif
 #include "cli/Options.h"
 
 #include <cmath>
@@ -69,10 +73,24 @@ std::string UnreachedReason(const art::ReducedMesh& m, const art::VoxelVolume& v
   }
   // An error bound alone refines up to one tet per voxel (TetReducer's cap), not to the finest
   // tets the voxels allow (5 per voxel cell).
-  const long long finest = 5LL * (v.Dims[0] - 1) * (v.Dims[1] - 1) * (v.Dims[2] - 1);
+  const long long finest = art::FullResolutionTetCount(v);
   return errorBoundAlone && m.NumberOfTets() >= v.NumberOfVoxels() && m.NumberOfTets() < finest
     ? "error bound not reached by one tet per voxel, where an error bound alone stops; --tets N lets it go on"
     : "error bound not reached: no finer tets than the voxels allow";
+}
+
+std::string CapToFullResolution(long long& tets, const art::VoxelVolume& v, const std::string& what)
+{
+  const long long finest = art::FullResolutionTetCount(v);
+  if (tets < finest)
+  {
+    return "";
+  }
+  const std::string note = what + " " + std::to_string(tets) + " is at least the " + std::to_string(finest) +
+    " tets of the full-resolution mesh (5 per voxel cell), the finest the voxels allow: that mesh is made, "
+    "exact, without reducing";
+  tets = finest;
+  return note;
 }
 } // namespace cli
 #endif

@@ -27,6 +27,11 @@ namespace cli
 /// exact, the voxels allow no finer tets, or an error bound alone (no --tets) stops at one tet
 /// per voxel.
 std::string UnreachedReason(const art::ReducedMesh& m, const art::VoxelVolume& v, bool errorBoundAlone);
+
+/// Caps `tets` (a budget of `what`, "--tets") at art::FullResolutionTetCount(v), before any
+/// work starts (a budget of 60M on 8.7M voxels ran for half an hour refining towards it);
+/// returns the note saying the full-resolution mesh is made instead, or "" below it.
+std::string CapToFullResolution(long long& tets, const art::VoxelVolume& v, const std::string& what);
 }
 #endif
 

@@ -261,8 +261,19 @@ art::ReducerOptions ReductionFor(const cli::Options& o, const art::RenderSetting
 // Reduces the scene's volume (or takes the mesh from --mesh-cache) and labels it.
 void ReduceVolume(const cli::Options& o, const std::string& input, Scene& sc, art::Progress& progress, cli::Json& j)
 {
-  const art::ReducerOptions ro = ReductionFor(o, sc.settings, sc.volume->GetNumberOfPoints());
+  art::ReducerOptions ro = ReductionFor(o, sc.settings, sc.volume->GetNumberOfPoints());
   const art::VoxelVolume vv = art::VolumeFromImage(sc.volume, input);
+  if (ro.TargetTets > 0)
+  {
+    const std::string capped = cli::CapToFullResolution(ro.TargetTets, vv, "--tets");
+    if (!capped.empty()) // the budget asks for the voxels themselves
+    {
+      AddNote(sc.note, capped);
+      sc.mesh = art::TetMesh::FromImage(sc.volume, input);
+      sc.meshLabel = "full-resolution tets (5 per voxel cell)";
+      return;
+    }
+  }
   art::ReducedMesh r;
   std::optional<cli::MeshCache> cache;
   bool cached = false;
