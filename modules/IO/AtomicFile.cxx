@@ -1,5 +1,6 @@
 #include "AtomicFile.h"
 #include "Error.h"
+#include "RegularFile.h"
 
 #include <algorithm>
 #include <atomic>
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -103,6 +105,29 @@ void UnregisterLive(int slot)
 }
 } // namespace
 
+namespace
+{
+// An existing file is replaced only when the user could write it: a write-protected (0444)
+// result was replaced without a word (as root too, whom access() lets write anything), and a
+// device or FIFO named as the output (/dev/null) would have been replaced by a plain file.
+void RefuseToReplace(const std::string& real, const std::string& dest)
+{
+  struct stat st;
+  if (::lstat(real.c_str(), &st) != 0)
+  {
+    return; // a new file
+  }
+  if (!S_ISREG(st.st_mode))
+  {
+    throw Error(std::string("exists and is ") + FileTypeName(st.st_mode) + ", not a regular file: not replaced", dest);
+  }
+  if ((st.st_mode & 0222) == 0 || ::access(real.c_str(), W_OK) != 0)
+  {
+    throw Error("exists and is write-protected: not replaced (make it writable or remove it first)", dest);
+  }
+}
+} // namespace
+
 AtomicFile::AtomicFile(std::string target)
   : Dest(std::move(target))
 {
@@ -129,6 +154,7 @@ AtomicFile::AtomicFile(std::string target)
   {
     throw Error("is a directory, expected a file name", Dest);
   }
+  RefuseToReplace(Real, Dest);
   if (access(dir.c_str(), W_OK) != 0)
   {
     throw Error("folder '" + dir.string() + "' is not writable", Dest);

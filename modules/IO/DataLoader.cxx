@@ -3,9 +3,11 @@
 #include "AtomicFile.h"
 #include "Error.h"
 #include "ObjReader.h"
+#include "OtherFormats.h"
 #include "PlyCheck.h"
 #include "ReaderRun.h"
 #include "StlCheck.h"
+#include "XmlCheck.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkAppendFilter.h>
@@ -17,7 +19,11 @@
 #include <vtkDataSet.h>
 #include <vtkDataSetAttributes.h>
 #include <vtkDataSetReader.h>
+#include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFloatArray.h>
+#include <vtkMatrix3x3.h>
+#include <vtkStringArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPLYReader.h>
@@ -87,6 +93,36 @@ void CheckPolyIndices(vtkPolyData* pd, const std::string& path)
     }
   }
 }
+// The reader's output against what the file's header promised (a cut binary .vtu read 730 of its
+// cells as empty).
+void RequireCount(vtkIdType got, long long promised, const char* what, const std::string& path)
+{
+  if (got != promised)
+  {
+    throw Error("holds " + std::to_string(got) + " " + what + " where its header promises " + std::to_string(promised) +
+        " (damaged or cut short)",
+      path);
+  }
+}
+
+// A cell naming a point past the last (vertex 1e9 of 4096) crashed the renderers that trust it.
+void CheckCellIndices(vtkUnstructuredGrid* ug, const std::string& path)
+{
+  vtkCellArray* cells = ug->GetCells();
+  if (!cells || cells->GetNumberOfConnectivityIds() == 0)
+  {
+    return;
+  }
+  double r[2];
+  cells->GetConnectivityArray()->GetRange(r, 0);
+  if (r[0] < 0 || r[1] >= static_cast<double>(ug->GetNumberOfPoints()))
+  {
+    throw Error("a cell refers to point " + std::to_string(static_cast<long long>(r[0] < 0 ? r[0] : r[1])) + " of " +
+        std::to_string(ug->GetNumberOfPoints()),
+      path);
+  }
+}
+
 // A multiblock file whose blocks are all polydata (.vtp, .pvtp: a CAD assembly or a surface
 // ParaView extracted from blocks) is a triangle scene; any other is a mesh. Its XML lists the
 // blocks' files, so the kind is known without reading them.
@@ -185,24 +221,87 @@ const char* KindName(DataKind k)
   }
 }
 
+Frame ParseFrame(const std::string& name)
+{
+  if (name == "patient")
+  {
+    return Frame::Patient;
+  }
+  if (name == "vtk")
+  {
+    return Frame::Vtk;
+  }
+  throw Error("--frame is patient or vtk, got '" + name + "'");
+}
+
+const char* FrameName(Frame f)
+{
+  return f == Frame::Patient ? "patient" : "vtk";
+}
+
+void RecordPlacement(vtkDataSet* data, const std::string& frame)
+{
+  double m[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+  if (auto* img = vtkImageData::SafeDownCast(data))
+  {
+    const double* d = img->GetDirectionMatrix()->GetData();
+    const double* sp = img->GetSpacing();
+    const double* o = img->GetOrigin();
+    int e[6];
+    img->GetExtent(e);
+    for (int r = 0; r < 3; ++r)
+    {
+      // world = origin + D diag(spacing) (ijk), ijk counted from the extent's first index.
+      for (int c = 0; c < 3; ++c)
+      {
+        m[4 * r + c] = d[3 * r + c] * sp[c];
+      }
+      m[4 * r + 3] = o[r];
+    }
+  }
+  vtkNew<vtkDoubleArray> matrix;
+  matrix->SetName("IndexToWorld");
+  matrix->SetNumberOfComponents(16);
+  matrix->InsertNextTuple(m);
+  vtkNew<vtkStringArray> name;
+  name->SetName("Frame");
+  name->InsertNextValue(frame);
+  data->GetFieldData()->AddArray(matrix);
+  data->GetFieldData()->AddArray(name);
+}
+
 DataKind KindOf(const std::string& path)
 {
+  return KindOf(path, LoadOptions());
+}
+
+DataKind KindOf(const std::string& path, const LoadOptions& options)
+{
+  const std::string e = LowerExtension(path);
+  if (options.Raw.Given())
+  {
+    RequireFile(path, false);
+    return DataKind::Volume;
+  }
+  if (path.find('%') != std::string::npos && !ImageStack(path).empty())
+  {
+    return DataKind::Volume; // a pattern of slices
+  }
   RequireFile(path, true);
   std::error_code ec;
-  const std::string e = LowerExtension(path);
   if (fs::is_directory(path, ec))
   {
-    if (!e.empty())
+    if (!e.empty() && ImageStack(path).empty())
     {
       throw Error("is a directory, expected a file", path);
     }
-    return DataKind::Volume; // a DICOM series
+    return DataKind::Volume; // a DICOM series or a stack of slices
   }
-  if (VolumeExt.count(e))
+  if (VolumeExt.count(e) || IsOtherVolume(e))
   {
     return DataKind::Volume;
   }
-  if (SurfaceExt.count(e))
+  if (SurfaceExt.count(e) || IsOtherSurface(e))
   {
     return DataKind::Surface;
   }
@@ -210,7 +309,7 @@ DataKind KindOf(const std::string& path)
   {
     return MultiBlockKind(path);
   }
-  if (MeshExt.count(e))
+  if (MeshExt.count(e) || IsOtherMesh(e))
   {
     return DataKind::Mesh;
   }
@@ -222,16 +321,16 @@ DataKind KindOf(const std::string& path)
   {
     TimeSeriesError(path);
   }
-  if (e == ".tif" || e == ".tiff" || e == ".png" || e == ".jpg" || e == ".jpeg" || e == ".bmp")
+  if (e == ".png" || e == ".jpg" || e == ".jpeg" || e == ".bmp" || e == ".pgm" || e == ".ppm")
   {
-    // A multi-page TIFF is how ImageJ and many micro-CT scanners export a volume.
-    throw Error("is a 2-D image or an image stack, not read as a volume (its spacing is unknown): save it as one "
-                "volume file with its spacing first (ParaView: Save Data as .vti; Fiji: Save As NRRD or MetaImage)",
+    throw Error("is a 2-D image, not a volume: give the folder of its slices, or a pattern such as slice%03d" + e +
+        " (with --raw-spacing X,Y,Z for their spacing)",
       path);
   }
   throw Error("unknown file type '" + (e.empty() ? std::string("(none)") : e) +
-      "' (volumes: .mha .mhd .nii .nii.gz .vti .pvti .nrrd or a DICOM folder; surfaces: .ply .obj "
-      ".stl .vtp .pvtp; meshes: .vtu .vts .vtr, their parallel .pvtu .pvts .pvtr, .vtm; any of them: legacy .vtk)",
+      "' (volumes: .mha .mhd .nii .nii.gz .vti .pvti .nrrd .slc .mnc .pic .mrc .hdr/.img .tif, a DICOM folder, "
+      "image slices, raw with --raw-dims; surfaces: .ply .obj .stl .vtp .pvtp .g .facet; meshes: .vtu .vts .vtr "
+      ".pvtu .pvts .pvtr .vtm .exo .inp .tec .neu; any of them: legacy .vtk)",
     path);
 }
 
@@ -245,6 +344,8 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   vtkSmartPointer<vtkAlgorithm> reader;
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   std::vector<double> plyDoubles, plyColours;
+  XmlCounts promised;
+  promised.Complete = false;
   if (e == ".obj")
   {
     pd = ReadObj(path); // vtkOBJReader drops faces (see ObjReader.h)
@@ -261,19 +362,26 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
   }
   else if (e == ".vtk")
   {
-    reader = FileReader<vtkDataSetReader>(path);
+    reader = LegacyReader(path);
   }
   else if (e == ".pvtp")
   {
+    CheckVtkXml(path);
     reader = FileReader<vtkXMLPPolyDataReader>(path);
   }
   else if (e == ".vtm")
   {
+    CheckVtkXml(path);
     reader = FileReader<vtkXMLMultiBlockDataReader>(path);
+  }
+  else if (e == ".vtp")
+  {
+    promised = CheckVtkXml(path);
+    reader = FileReader<vtkXMLPolyDataReader>(path);
   }
   else
   {
-    reader = FileReader<vtkXMLPolyDataReader>(path);
+    reader = OtherSurfaceReader(path);
   }
   if (reader)
   {
@@ -339,7 +447,14 @@ vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)
                                   : std::string("holds no polygons (empty or unreadable surface)"),
       path);
   }
+  if (promised.Complete)
+  {
+    RequireCount(pd->GetNumberOfPoints(), promised.Points, "points", path);
+    RequireCount(pd->GetNumberOfPolys(), promised.Polys, "polygons", path);
+    RequireCount(pd->GetNumberOfStrips(), promised.Strips, "triangle strips", path);
+  }
   CheckPolyIndices(pd, path);
+  RecordPlacement(pd, "file coordinates");
   return pd;
 }
 
@@ -384,37 +499,50 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)
   }
   const std::string e = LowerExtension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
+  XmlCounts promised;
+  promised.Complete = false;
   if (e == ".vtu")
   {
+    promised = CheckVtkXml(path);
     reader = FileReader<vtkXMLUnstructuredGridReader>(path);
   }
   else if (e == ".vts")
   {
+    CheckVtkXml(path);
     reader = FileReader<vtkXMLStructuredGridReader>(path);
   }
   else if (e == ".vtr")
   {
+    CheckVtkXml(path);
     reader = FileReader<vtkXMLRectilinearGridReader>(path);
   }
   else if (e == ".pvtu")
   {
+    CheckVtkXml(path);
     reader = FileReader<vtkXMLPUnstructuredGridReader>(path);
   }
   else if (e == ".pvts")
   {
+    CheckVtkXml(path);
     reader = FileReader<vtkXMLPStructuredGridReader>(path);
   }
   else if (e == ".pvtr")
   {
+    CheckVtkXml(path);
     reader = FileReader<vtkXMLPRectilinearGridReader>(path);
   }
   else if (e == ".vtm")
   {
+    CheckVtkXml(path);
     reader = FileReader<vtkXMLMultiBlockDataReader>(path);
+  }
+  else if (e == ".vtk")
+  {
+    reader = LegacyReader(path);
   }
   else
   {
-    reader = FileReader<vtkDataSetReader>(path);
+    reader = OtherMeshReader(path);
   }
   RunReader(reader, path);
   vtkSmartPointer<vtkUnstructuredGrid> ug = vtkUnstructuredGrid::SafeDownCast(reader->GetOutputDataObject(0));
@@ -452,6 +580,12 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)
   }
   auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
   copy->ShallowCopy(ug);
+  if (promised.Complete)
+  {
+    RequireCount(copy->GetNumberOfPoints(), promised.Points, "points", path);
+    RequireCount(copy->GetNumberOfCells(), promised.Cells, "cells", path);
+  }
+  CheckCellIndices(copy, path);
   if (copy->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
   {
     // Pieces saved from a parallel run with ghost levels repeat their neighbours' boundary cells,
@@ -465,12 +599,21 @@ vtkSmartPointer<vtkUnstructuredGrid> LoadMesh(const std::string& path)
   {
     throw Error("holds no cells (empty or unreadable mesh)", path);
   }
+  if (!copy->GetFieldData()->GetArray("IndexToWorld"))
+  {
+    RecordPlacement(copy, "file coordinates"); // a reduced mesh keeps its volume's
+  }
   return copy;
 }
 
 vtkSmartPointer<vtkDataObject> Load(const std::string& path, DataKind* kind)
 {
-  const DataKind k = KindOf(path);
+  return Load(path, LoadOptions(), kind);
+}
+
+vtkSmartPointer<vtkDataObject> Load(const std::string& path, const LoadOptions& options, DataKind* kind)
+{
+  const DataKind k = KindOf(path, options);
   if (kind)
   {
     *kind = k;
@@ -478,7 +621,7 @@ vtkSmartPointer<vtkDataObject> Load(const std::string& path, DataKind* kind)
   switch (k)
   {
     case DataKind::Volume:
-      return LoadVolume(path);
+      return LoadVolume(path, options);
     case DataKind::Surface:
       return LoadSurface(path);
     default:
@@ -499,9 +642,14 @@ void SaveMesh(vtkUnstructuredGrid* mesh, const std::string& path)
   w->SetDataModeToBinary();
   w->SetCompressorTypeToZLib();
   ErrorCatcher catcher(w);
-  if (!w->Write() || !catcher.Message.empty())
+  if (!w->Write() || !catcher.Message.empty() || w->GetErrorCode() != vtkErrorCode::NoError)
   {
-    throw Error("cannot write mesh: " + catcher.Message, path);
+    // The executive's failure names no cause (a dump of its request followed): say the writer's.
+    const unsigned long code = w->GetErrorCode();
+    throw Error(code == vtkErrorCode::OutOfDiskSpaceError ? std::string("cannot write mesh: no space left on device")
+        : !catcher.Message.empty() && !ErrorCatcher::IsRequestDump(catcher.Message) ? "cannot write mesh: " + catcher.Message
+        : std::string("cannot write mesh: ") + vtkErrorCode::GetStringFromErrorCode(code),
+      path);
   }
   file.Commit();
 }

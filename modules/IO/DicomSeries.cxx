@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 namespace fs = std::filesystem;
@@ -25,6 +26,7 @@ struct Image
   std::string Syntax; // transfer syntax UID
   double Position[3] = { 0, 0, 0 }, Orientation[6] = { 0, 0, 0, 0, 0, 0 };
   long Frames = 1;
+  long long PixelBytes = 0; ///< what its size, bits and samples need
 };
 
 // NumberOfFrames (0028,0008), an integer string; DICOMAppHelper does not keep it.
@@ -74,6 +76,47 @@ void CheckSpacing(const std::vector<Image>& images, const std::string& dir)
   }
 }
 
+// The bytes after the pixel data element's header (7FE0,0010; the last in the file), or -1 when
+// none is found in the file's first megabyte.
+long long PixelDataBytes(const fs::path& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  std::string head(1 << 20, '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  const std::string tag("\xE0\x7F\x10\x00", 4);
+  std::size_t at = head.find(tag);
+  while (at != std::string::npos && head.find(tag, at + 1) != std::string::npos)
+  {
+    at = head.find(tag, at + 1);
+  }
+  if (at == std::string::npos)
+  {
+    return -1;
+  }
+  // Explicit VR: "OB"/"OW", two reserved bytes and a 4-byte length; implicit: the length.
+  const bool explicitVr = head.compare(at + 4, 2, "OW") == 0 || head.compare(at + 4, 2, "OB") == 0;
+  std::error_code ec;
+  return static_cast<long long>(fs::file_size(file, ec)) - static_cast<long long>(at + (explicitVr ? 12 : 8));
+}
+
+// Slices cut short (each missing its last bytes) read with the rest as zeros, and an empty file
+// in the folder was dropped without a word.
+void CheckSliceBytes(const std::vector<Image>& images, const std::string& dir)
+{
+  for (const Image& im : images)
+  {
+    const long long have = PixelDataBytes(im.File);
+    if (have >= 0 && have < im.PixelBytes)
+    {
+      throw Error("slice " + fs::path(im.File).filename().string() + " is cut short: its " + std::to_string(im.Width) +
+          " x " + std::to_string(im.Height) + " pixels need " + std::to_string(im.PixelBytes) + " bytes, it holds " +
+          std::to_string(std::max(0LL, have)),
+        dir);
+    }
+  }
+}
+
 // vtkDICOMImageReader reads only uncompressed pixels: implicit or explicit VR, little or big endian.
 bool Uncompressed(std::string uid)
 {
@@ -95,6 +138,10 @@ std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInF
   {
     if (entry.is_regular_file(ec))
     {
+      if (entry.file_size(ec) == 0)
+      {
+        throw Error("slice " + entry.path().filename().string() + " is empty (0 bytes): restore or remove it", dir);
+      }
       paths.push_back(entry.path());
     }
   }
@@ -117,6 +164,8 @@ std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInF
     helper.GetSeriesUIDs(uids);
     Image im{ p.string(), helper.GetWidth(), helper.GetHeight(), helper.GetTransferSyntaxUID() };
     im.Frames = frames.Frames;
+    im.PixelBytes = static_cast<long long>(im.Width) * im.Height * std::max(1, helper.GetNumberOfComponents()) *
+      ((helper.GetBitsAllocated() + 7) / 8);
     std::copy(helper.GetImagePositionPatient(), helper.GetImagePositionPatient() + 3, im.Position);
     std::copy(helper.GetImageOrientationPatient(), helper.GetImageOrientationPatient() + 6, im.Orientation);
     series[uids.empty() ? std::string() : uids.front()].push_back(im);
@@ -177,6 +226,7 @@ std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInF
     }
   }
   CheckSpacing(chosen, dir);
+  CheckSliceBytes(chosen, dir);
   std::vector<std::string> files;
   for (const Image& im : chosen)
   {

@@ -90,7 +90,10 @@ void WritePng(const Image& img, const std::string& file, const std::string& path
   writer->Write();
   if (writer->GetErrorCode() != vtkErrorCode::NoError)
   {
-    throw Error(std::string("cannot write image: ") + vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()), path);
+    throw Error(writer->GetErrorCode() == vtkErrorCode::OutOfDiskSpaceError
+        ? std::string("cannot write image: no space left on device")
+        : std::string("cannot write image: ") + vtkErrorCode::GetStringFromErrorCode(writer->GetErrorCode()),
+      path);
   }
 }
 

@@ -1,8 +1,10 @@
 #include "MetaImageCheck.h"
 #include "Error.h"
+#include "RegularFile.h"
 
 #include <vtk_zlib.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -228,6 +230,26 @@ void CheckInflatedSize(const std::string& dataFile, std::streamoff offset, long 
       path);
   }
 }
+// Far more bytes than the voxels need: the header's ElementType or DimSize does not describe the
+// data (MET_CHAR over float data read as garbage). A few bytes more (a line end) are allowed.
+void RequireNoExtraBytes(Keys& keys, long long have, long long need, int esize, const std::string& path)
+{
+  if (have <= need + std::max(16LL, need / 64))
+  {
+    return;
+  }
+  std::string hint;
+  if (have % need == 0 && have / need <= 8)
+  {
+    const long long wider = esize * (have / need);
+    hint = " (" + std::to_string(have / need) + " times as many: " + std::to_string(wider) + "-byte voxels, e.g. " +
+      (wider == 2 ? "MET_SHORT" : wider == 4 ? "MET_FLOAT or MET_INT" : wider == 8 ? "MET_DOUBLE" : "another type") +
+      ", or more channels?)";
+  }
+  throw Error("holds " + std::to_string(have) + " data bytes where DimSize " + keys["DimSize"] + " of " +
+      keys["ElementType"] + " needs " + std::to_string(need) + hint + ": the header does not describe the data",
+    path);
+}
 } // namespace
 
 void CheckMetaImage(const std::string& path)
@@ -294,16 +316,20 @@ void CheckMetaImage(const std::string& path)
     }
     dataFile = (fs::path(path).parent_path() / edf).string();
     offset = Integer(keys, "HeaderSize", 0, path);
-    std::error_code ec;
-    if (!fs::exists(dataFile, ec))
+    const std::string problem = RegularFileProblem(dataFile);
+    if (!problem.empty())
     {
-      throw Error("data file '" + edf + "' named in the header does not exist", path);
+      throw Error("data file '" + edf + "' named in the header: " + problem, path);
     }
   }
   std::error_code ec;
   const auto size = static_cast<long long>(fs::file_size(dataFile, ec));
-  const long long have = size - offset;
   long long need = static_cast<long long>(count) * esize * channels;
+  if (offset < 0)
+  {
+    offset = std::max(0LL, size - need); // HeaderSize -1: the data are the file's last bytes
+  }
+  const long long have = size - offset;
   if (compressed)
   {
     if (!keys.count("CompressedDataSize") && dataFile == path)
@@ -330,6 +356,7 @@ void CheckMetaImage(const std::string& path)
         std::to_string(std::max(0LL, have)),
       path);
   }
+  RequireNoExtraBytes(keys, have, need, esize, path);
 }
 
 bool MetaImageDirection(const std::string& path, double direction[9])

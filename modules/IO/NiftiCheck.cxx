@@ -86,11 +86,18 @@ void CheckNifti(const std::string& path)
     }
     voxels *= static_cast<unsigned long long>(dim[i]);
   }
+  const int sformCode = two ? Get<std::int32_t>(b, 348, swap) : Get<std::int16_t>(b, 254, swap);
   for (int i = 1; i <= std::min<long long>(dim[0], 3); ++i)
   {
     if (!std::isfinite(pixdim[i]))
     {
       throw Error("NIfTI spacing pixdim[" + std::to_string(i) + "] is not a finite number", path);
+    }
+    // VTK's reader reads a zero spacing as 1 without a word; only an sform places the voxels
+    // without it.
+    if (pixdim[i] == 0 && dim[i] > 1 && sformCode <= 0)
+    {
+      throw Error("NIfTI spacing pixdim[" + std::to_string(i) + "] is 0 and no sform gives the spacing", path);
     }
   }
   // An uncompressed file must hold every voxel after vox_offset (a .nii.gz is checked as VTK reads it).

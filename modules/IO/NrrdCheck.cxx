@@ -1,5 +1,6 @@
 #include "NrrdCheck.h"
 #include "Error.h"
+#include "RegularFile.h"
 
 #include <vtkDataArray.h>
 
@@ -70,63 +71,84 @@ std::map<std::string, std::string> ReadNrrdFields(std::istream& in)
   return keys;
 }
 
-void CheckNrrd(const std::string& path)
+namespace
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
+using Fields = std::map<std::string, std::string>;
+
+// No blank line ends the header. vtkNrrdReader (VTK 9.1) never returned on such a file when its
+// last line had no line end (a detached .nhdr saved without a final newline).
+void RequireHeaderEnd(const Fields& keys, const std::string& path)
+{
+  const bool detached = keys.count("data file") || keys.count("datafile");
+  if (!detached)
   {
-    throw Error("cannot open file", path);
+    throw Error("the header has no blank line before its data (a NRRD header ends with an empty line)", path);
   }
-  std::map<std::string, std::string> keys = ReadNrrdFields(in);
-  if (in.eof())
+  std::ifstream last(path, std::ios::binary | std::ios::ate);
+  char c = '\n';
+  if (last.tellg() > 0)
   {
-    // No blank line ends the header. vtkNrrdReader (VTK 9.1) never returned on such a file when
-    // its last line had no line end (a detached .nhdr saved without a final newline).
-    const bool detached = keys.count("data file") || keys.count("datafile");
-    if (!detached)
-    {
-      throw Error("the header has no blank line before its data (a NRRD header ends with an empty line)", path);
-    }
-    std::ifstream last(path, std::ios::binary | std::ios::ate);
-    char c = '\n';
-    if (last.tellg() > 0)
-    {
-      last.seekg(-1, std::ios::end);
-      last.get(c);
-    }
-    if (c != '\n')
-    {
-      throw Error("the header's last line has no line end, on which VTK's NRRD reader never returns: end the "
-                  "file with a newline",
-        path);
-    }
+    last.seekg(-1, std::ios::end);
+    last.get(c);
   }
-  in.clear();
-  const std::streamoff attachedStart = in.tellg();
+  if (c != '\n')
   {
-    // vtkNrrdReader makes the first of four axes the components. When the header puts that axis
-    // in space (a time series: kinds 'domain domain domain list', or a direction for it), the
-    // volume came out one axis short with the time steps as components.
-    std::istringstream ks(keys["kinds"]), ds(keys["space directions"]);
-    std::string first, dir;
-    ks >> first;
-    ds >> dir;
-    std::transform(first.begin(), first.end(), first.begin(), [](unsigned char c) { return std::tolower(c); });
-    const bool spatialFirst = first == "domain" || first == "space" || (first.empty() && !dir.empty() && dir != "none");
-    if (std::atoi(keys["dimension"].c_str()) > 3 && spatialFirst)
-    {
-      throw Error("a " + keys["dimension"] + "-D image whose first axis is in space (sizes " + keys["sizes"] +
-          (keys.count("kinds") ? ", kinds " + keys["kinds"] : "") +
-          "): only 3-D volumes are read; save one volume (a time step) as its own 3-D file (unu slice)",
-        path);
-    }
+    throw Error("the header's last line has no line end, on which VTK's NRRD reader never returns: end the "
+                "file with a newline",
+      path);
   }
-  const int esize = NrrdTypeSize(keys["type"]);
-  const std::string encoding = keys["encoding"];
-  const std::string df = DataFileField(keys);
-  // vtkNrrdReader (VTK 9.1) segfaults on every file series, even a complete one. It takes the field
-  // as NRRD does: LIST, or four words or more ("<format> <min> <max> <step> [<subdim>]"); fewer
-  // words are one file's name, spaces and all ("my scan.raw" was refused as a series).
+}
+
+// "dimension: 0" (or 17) segfaulted vtkNrrdReader; so did sizes that do not match it.
+void RequireDimension(Fields& keys, const std::string& path)
+{
+  char* end = nullptr;
+  const long dimension = std::strtol(keys["dimension"].c_str(), &end, 10);
+  if (keys["dimension"].empty() || *end != '\0' || dimension < 1 || dimension > 16)
+  {
+    throw Error("dimension '" + keys["dimension"].substr(0, 20) + "' is not 1..16 (NRRD's limit)", path);
+  }
+  std::istringstream sizes(keys["sizes"]);
+  std::vector<std::string> w{ std::istream_iterator<std::string>(sizes), std::istream_iterator<std::string>() };
+  if (static_cast<long>(w.size()) != dimension)
+  {
+    throw Error("sizes '" + keys["sizes"].substr(0, 60) + "' lists " + std::to_string(w.size()) +
+        " sizes for dimension " + std::to_string(dimension),
+      path);
+  }
+  if (dimension < 2 || dimension > 4)
+  {
+    throw Error("a " + std::to_string(dimension) + "-D image: only 2-D slices, 3-D volumes and 4-D ones with "
+        "the first axis as components are read",
+      path);
+  }
+}
+
+// vtkNrrdReader makes the first of four axes the components. When the header puts that axis in
+// space (a time series: kinds 'domain domain domain list', or a direction for it), the volume
+// came out one axis short with the time steps as components.
+void RefuseSpatialFourthAxis(Fields& keys, const std::string& path)
+{
+  std::istringstream ks(keys["kinds"]), ds(keys["space directions"]);
+  std::string first, dir;
+  ks >> first;
+  ds >> dir;
+  std::transform(first.begin(), first.end(), first.begin(), [](unsigned char c) { return std::tolower(c); });
+  const bool spatialFirst = first == "domain" || first == "space" || (first.empty() && !dir.empty() && dir != "none");
+  if (std::atoi(keys["dimension"].c_str()) > 3 && spatialFirst)
+  {
+    throw Error("a " + keys["dimension"] + "-D image whose first axis is in space (sizes " + keys["sizes"] +
+        (keys.count("kinds") ? ", kinds " + keys["kinds"] : "") +
+        "): only 3-D volumes are read; save one volume (a time step) as its own 3-D file (unu slice)",
+      path);
+  }
+}
+
+// vtkNrrdReader (VTK 9.1) segfaults on every file series, even a complete one. It takes the field
+// as NRRD does: LIST, or four words or more ("<format> <min> <max> <step> [<subdim>]"); fewer
+// words are one file's name, spaces and all ("my scan.raw" was refused as a series).
+void RefuseFileSeries(const std::string& df, const std::string& path)
+{
   std::istringstream words(df);
   std::vector<std::string> w{ std::istream_iterator<std::string>(words), std::istream_iterator<std::string>() };
   auto integer = [](const std::string& t) {
@@ -146,7 +168,13 @@ void CheckNrrd(const std::string& path)
                 "for a series of files: rename the data file (and the header's 'data file' line)",
       path);
   }
-  if (esize == 0 || (encoding != "raw") || !keys.count("sizes"))
+}
+
+// Raw data (attached, or in the data file) must hold every voxel the sizes and type promise.
+void RequireRawBytes(Fields& keys, const std::string& df, long long attachedStart, const std::string& path)
+{
+  const int esize = NrrdTypeSize(keys["type"]);
+  if (esize == 0 || keys["encoding"] != "raw" || !keys.count("sizes"))
   {
     return; // compressed, text or unusual data: VTK checks as it reads
   }
@@ -161,14 +189,10 @@ void CheckNrrd(const std::string& path)
     }
     count *= static_cast<unsigned long long>(d);
   }
-  long long skip = 0;
-  if (keys.count("byte skip"))
+  const long long skip = keys.count("byte skip") ? std::atoll(keys["byte skip"].c_str()) : 0;
+  if (skip < 0)
   {
-    skip = std::atoll(keys["byte skip"].c_str());
-    if (skip < 0)
-    {
-      return; // -1: the data are the file's last bytes
-    }
+    return; // -1: the data are the file's last bytes
   }
   std::string dataFile = path;
   long long start = attachedStart;
@@ -176,10 +200,10 @@ void CheckNrrd(const std::string& path)
   {
     dataFile = (fs::path(df).is_absolute() ? fs::path(df) : fs::path(path).parent_path() / df).string();
     start = 0;
-    std::error_code ec;
-    if (!fs::exists(dataFile, ec))
+    const std::string problem = RegularFileProblem(dataFile);
+    if (!problem.empty())
     {
-      throw Error("data file '" + df + "' named in the header does not exist", path);
+      throw Error("data file '" + df + "' named in the header: " + problem, path);
     }
   }
   std::error_code ec;
@@ -191,6 +215,28 @@ void CheckNrrd(const std::string& path)
         std::to_string(std::max(0LL, have)),
       path);
   }
+}
+} // namespace
+
+void CheckNrrd(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw Error("cannot open file", path);
+  }
+  Fields keys = ReadNrrdFields(in);
+  if (in.eof())
+  {
+    RequireHeaderEnd(keys, path);
+  }
+  in.clear();
+  const std::streamoff attachedStart = in.tellg();
+  RequireDimension(keys, path);
+  RefuseSpatialFourthAxis(keys, path);
+  const std::string df = DataFileField(keys);
+  RefuseFileSeries(df, path);
+  RequireRawBytes(keys, df, attachedStart, path);
 }
 
 bool ReadNrrdText(const std::string& path, vtkDataArray* values)

@@ -1,9 +1,17 @@
 #include "ReaderRun.h"
 #include "AvailableMemory.h"
 #include "Error.h"
+#include "RegularFile.h"
+#include "StreamCapture.h"
 
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
+#include <vtkDataSetReader.h>
+#include <vtkPolyDataReader.h>
+#include <vtkRectilinearGridReader.h>
+#include <vtkStructuredGridReader.h>
+#include <vtkStructuredPointsReader.h>
+#include <vtkUnstructuredGridReader.h>
 #include <vtkDataSetAttributes.h>
 #include <vtkInformation.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
@@ -19,23 +27,7 @@ namespace art
 {
 void RequireFile(const std::string& path, bool allowDirectory)
 {
-  std::error_code ec;
-  if (path.empty())
-  {
-    throw Error("empty file name");
-  }
-  if (!fs::exists(path, ec))
-  {
-    throw Error("no such file or directory", path);
-  }
-  if (fs::is_directory(path, ec) && !allowDirectory)
-  {
-    throw Error("is a directory, expected a file", path);
-  }
-  if (!fs::is_directory(path, ec) && fs::file_size(path, ec) == 0)
-  {
-    throw Error("file is empty", path);
-  }
+  RequireRegularFile(path, allowDirectory);
 }
 
 // An image whose voxels cannot be held: the read was killed by the system half-way, or thrashed,
@@ -71,9 +63,62 @@ void CheckImageFits(vtkAlgorithm* reader, const std::string& path)
   }
 }
 
+namespace
+{
+// The warnings of VTK's readers that mean data were not read (the rest stand in for zeros).
+bool DataWarning(const std::string& w)
+{
+  for (const char* what : { "rror reading", "Premature EOF", "Unable to read", "Cannot read", "not enough data" })
+  {
+    if (w.find(what) != std::string::npos)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
+vtkSmartPointer<vtkAlgorithm> LegacyReader(const std::string& path)
+{
+  vtkNew<vtkDataSetReader> probe;
+  probe->SetFileName(path.c_str());
+  ErrorCatcher catcher(probe);
+  switch (probe->ReadOutputType())
+  {
+    case VTK_STRUCTURED_POINTS:
+    case VTK_IMAGE_DATA:
+      return FileReader<vtkStructuredPointsReader>(path);
+    case VTK_POLY_DATA:
+      return FileReader<vtkPolyDataReader>(path);
+    case VTK_UNSTRUCTURED_GRID:
+      return FileReader<vtkUnstructuredGridReader>(path);
+    case VTK_STRUCTURED_GRID:
+      return FileReader<vtkStructuredGridReader>(path);
+    case VTK_RECTILINEAR_GRID:
+      return FileReader<vtkRectilinearGridReader>(path);
+    default:
+      throw Error("is not a legacy VTK data set (no readable header)" +
+          (catcher.Message.empty() ? std::string() : ": " + catcher.Message),
+        path);
+  }
+}
+
+void RunReaderInformation(vtkAlgorithm* reader, const std::string& path)
+{
+  ErrorCatcher catcher(reader);
+  StreamCapture quiet;
+  reader->UpdateInformation();
+  if (!catcher.Message.empty() && !ErrorCatcher::IsRequestDump(catcher.Message))
+  {
+    throw Error("cannot read: " + catcher.Message, path);
+  }
+}
+
 void RunReader(vtkAlgorithm* reader, const std::string& path)
 {
   ErrorCatcher catcher(reader);
+  StreamCapture quiet; // MetaIO and others write to std::cerr and std::cout themselves
   try
   {
     reader->UpdateInformation();
@@ -86,9 +131,33 @@ void RunReader(vtkAlgorithm* reader, const std::string& path)
   }
   // VTK's XML readers call a data set of no points and no cells (as VTK writes an empty
   // vtkUnstructuredGrid or vtkPolyData) an error; the callers say plainly that it holds nothing.
-  if (!catcher.Message.empty() && catcher.Message.rfind("No Points element available", 0) != 0)
+  if (!catcher.Message.empty() && catcher.Message.rfind("No Points element available", 0) != 0 &&
+    !ErrorCatcher::IsRequestDump(catcher.Message))
   {
     throw Error("cannot read: " + catcher.Message, path);
+  }
+  std::string warning = catcher.Warning;
+  if (!DataWarning(warning))
+  {
+    // The legacy readers' "Error reading binary data!" reaches only the output window.
+    const std::string text = quiet.VtkMessages();
+    for (const char* what : { "Error reading", "Premature EOF", "Unable to read" })
+    {
+      const std::size_t at = text.find(what);
+      if (at != std::string::npos)
+      {
+        warning = text.substr(at, text.find('\n', at) - at);
+        break;
+      }
+    }
+  }
+  if (DataWarning(warning))
+  {
+    throw Error("cannot read: " + ErrorCatcher::Clean(warning) + " (the file is cut short or its counts are wrong)", path);
+  }
+  if (!catcher.Message.empty() && ErrorCatcher::IsRequestDump(catcher.Message))
+  {
+    throw Error("cannot read it (VTK's reader failed without saying why)", path);
   }
 }
 } // namespace art

@@ -14,10 +14,11 @@
 
 namespace art
 {
-// Keeps the first error a VTK object reports instead of letting it reach the output window.
+// Keeps the first error and the first warning a VTK object reports instead of letting them reach
+// the output window.
 struct ErrorCatcher
 {
-  std::string Message;
+  std::string Message, Warning;
   vtkNew<vtkCallbackCommand> Cmd;
 
   explicit ErrorCatcher(vtkAlgorithm* alg)
@@ -25,15 +26,19 @@ struct ErrorCatcher
     Cmd->SetClientData(this);
     Cmd->SetCallback([](vtkObject*, unsigned long event, void* self, void* data) {
       auto* me = static_cast<ErrorCatcher*>(self);
-      if (event == vtkCommand::ErrorEvent && me->Message.empty() && data)
+      std::string& keep = event == vtkCommand::ErrorEvent ? me->Message : me->Warning;
+      if (keep.empty() && data)
       {
-        me->Message = Clean(static_cast<const char*>(data));
+        keep = Clean(static_cast<const char*>(data));
       }
     });
     alg->AddObserver(vtkCommand::ErrorEvent, Cmd);
     alg->AddObserver(vtkCommand::WarningEvent, Cmd);
     alg->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, Cmd);
   }
+  /// The executive's "Algorithm ... returned failure for request: vtkInformation (0x..) ..." names
+  /// no cause (a dump of the request followed); the algorithm's own message comes first.
+  static bool IsRequestDump(const std::string& m) { return m.find("returned failure for request") != std::string::npos; }
   // VTK messages carry "ERROR: In file, line N\nclass (0x..): text"; keep only the text.
   static std::string Clean(std::string m)
   {
@@ -48,16 +53,23 @@ struct ErrorCatcher
     }
     for (char& c : m)
     {
-      c = (c == '\n') ? ' ' : c;
+      c = (c == '\n' || c == '\r' || c == '\t') ? ' ' : c;
     }
-    return m;
+    return m.size() > 300 ? m.substr(0, 300) + "..." : m;
   }
 };
 
 /// Throws art::Error naming `path` when it is missing, empty, or a folder (unless allowed).
 void RequireFile(const std::string& path, bool allowDirectory);
-/// Updates `reader`; its first error, or running out of memory, becomes an art::Error naming `path`.
+/// Updates `reader`; its first error, a warning that data could not be read (VTK's legacy
+/// readers only warn of a file cut short), or running out of memory, becomes an art::Error
+/// naming `path`. What VTK code prints to std::cerr meanwhile is kept off the terminal.
 void RunReader(vtkAlgorithm* reader, const std::string& path);
+/// UpdateInformation on `reader` (a header read), its first error an art::Error naming `path`.
+void RunReaderInformation(vtkAlgorithm* reader, const std::string& path);
+/// The reader of a legacy .vtk file for the data set its header names (vtkDataSetReader runs an
+/// inner reader whose errors and warnings no observer of its own sees).
+vtkSmartPointer<vtkAlgorithm> LegacyReader(const std::string& path);
 
 template <class Reader>
 vtkSmartPointer<vtkAlgorithm> FileReader(const std::string& path)

@@ -9,6 +9,8 @@
 #include "MetaImageCheck.h"
 #include "NiftiCheck.h"
 #include "NrrdCheck.h"
+#include "OtherFormats.h"
+#include "XmlCheck.h"
 #include "ReaderRun.h"
 #include "ValueMagnitude.h"
 #include "VolumePlacement.h"
@@ -243,46 +245,38 @@ void MakeSpacingPositive(vtkImageData* img, const std::string& path)
 
 namespace
 {
-// A folder of 2-D slices (a micro-CT's TIFF or PNG stack) is no volume without its spacing: say
-// what it holds and how to make one, instead of only that no DICOM series is there.
-std::string ImageStackHint(const std::string& folder)
+// The voxels read against the extent the reader's header promised (a reader stopping short left
+// a smaller or empty array behind the full extent).
+void CheckVoxelCount(vtkAlgorithm* reader, vtkImageData* img, const std::string& path)
 {
-  static const std::set<std::string> slices = { ".png", ".tif", ".tiff", ".jpg", ".jpeg", ".bmp" };
-  std::error_code ec;
-  long long n = 0;
-  std::string kind;
-  for (const auto& f : fs::directory_iterator(folder, ec))
+  vtkDataArray* s = img->GetPointData()->GetScalars();
+  if (s && s->GetNumberOfTuples() != img->GetNumberOfPoints())
   {
-    const std::string e = LowerExtension(f.path().string());
-    if (f.is_regular_file(ec) && slices.count(e))
-    {
-      ++n;
-      kind = e.substr(1);
-    }
+    throw Error("holds " + std::to_string(s->GetNumberOfTuples()) + " voxel values for its " +
+        std::to_string(img->GetNumberOfPoints()) + " voxels (damaged or cut short)",
+      path);
   }
-  if (n == 0)
-  {
-    return "";
-  }
-  for (char& c : kind)
-  {
-    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  }
-  return " but " + std::to_string(n) + " " + kind + " image" + (n > 1 ? "s" : "") +
-    ": a stack of slices is not read as a volume (its spacing is unknown); join it into one file with its spacing "
-    "first (ParaView: open the files as one series, Save Data as .vti; Fiji: Save As NRRD or MetaImage)";
+  (void)reader;
 }
 
-vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const std::string& array);
+vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const LoadOptions& options);
 }
 
 vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::string& array)
 {
+  LoadOptions options;
+  options.Array = array;
+  return LoadVolume(path, options);
+}
+
+vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const LoadOptions& options)
+{
   // "velocity:magnitude", "velocity:0": a vector's magnitude or one component becomes the scalars
   // (what VTK's volume mappers draw of a vector with VectorMode), after any rescale of the file.
   int component;
-  const std::string name = SplitComponent(array, &component);
-  auto img = LoadWholeVolume(path, name);
+  LoadOptions whole = options;
+  whole.Array = SplitComponent(options.Array, &component);
+  auto img = LoadWholeVolume(path, whole);
   if (component != WholeArray)
   {
     try
@@ -294,14 +288,17 @@ vtkSmartPointer<vtkImageData> LoadVolume(const std::string& path, const std::str
       throw Error(e.problem(), path);
     }
   }
+  RecordPlacement(img, options.Placement == Frame::Patient ? "LPS patient" : "VTK reader");
   return img;
 }
 
 namespace
 {
-vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const std::string& array)
+vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const LoadOptions& options)
 {
-  if (KindOf(path) != DataKind::Volume)
+  const std::string& array = options.Array;
+  const bool patient = options.Placement == Frame::Patient;
+  if (KindOf(path, options) != DataKind::Volume)
   {
     throw Error("is not a volume (expected .mha .mhd .nii .nii.gz .vti .pvti .nrrd, image data in .vtk, or a DICOM folder)",
       path);
@@ -310,11 +307,15 @@ vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const std
   const std::string e = LowerExtension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
   std::unique_ptr<DicomLinkFolder> series; // lives until the reader has read
-  if (fs::is_directory(path, ec))
+  if (options.Raw.Given() || IsOtherVolume(e) || !ImageStack(path).empty())
+  {
+    reader = OtherVolumeReader(path, options.Raw);
+  }
+  else if (fs::is_directory(path, ec))
   {
     if (!HasDicomFile(path))
     {
-      throw Error("folder holds no readable DICOM series" + ImageStackHint(path), path);
+      throw Error("folder holds no readable DICOM series and no image slices (.png .jpg .tif .bmp)", path);
     }
     // vtkDICOMImageReader reads every series in a folder as one: give it one (DicomSeries.h).
     int seriesInFolder = 0;
@@ -339,15 +340,17 @@ vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const std
   }
   else if (e == ".vti")
   {
+    CheckVtkXml(path);
     reader = FileReader<vtkXMLImageDataReader>(path);
   }
   else if (e == ".pvti")
   {
+    CheckVtkXml(path);
     reader = FileReader<vtkXMLPImageDataReader>(path);
   }
   else if (e == ".vtk")
   {
-    reader = FileReader<vtkDataSetReader>(path);
+    reader = LegacyReader(path);
   }
   else
   {
@@ -364,7 +367,7 @@ vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const std
   }
   img = CellsAsVoxels(img, array);
   SelectScalars(img->GetPointData(), array, path);
-  if (vtkMetaImageReader::SafeDownCast(reader) && MetaImageDirection(path, direction))
+  if (patient && vtkMetaImageReader::SafeDownCast(reader) && MetaImageDirection(path, direction))
   {
     img->SetDirectionMatrix(direction);
   }
@@ -374,17 +377,21 @@ vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const std
     {
       ReadNrrdText(path, s); // VTK read text data as zeros
     }
-    img = PlaceNrrd(img, path);
+    img = patient ? PlaceNrrd(img, path) : NrrdAxesAsVtk(img, path);
   }
-  if (auto* dicom = vtkDICOMImageReader::SafeDownCast(reader))
+  if (auto* dicom = vtkDICOMImageReader::SafeDownCast(reader); dicom && patient)
   {
     ApplyDicomGeometry(img, dicom);
   }
   if (auto* nifti = vtkNIFTIImageReader::SafeDownCast(reader))
   {
     ApplyRescale(img, nifti->GetRescaleSlope(), nifti->GetRescaleIntercept());
-    PlaceNifti(img, nifti, path);
+    if (patient && !IsOtherVolume(e))
+    {
+      PlaceNifti(img, nifti, path);
+    }
   }
+  CheckVoxelCount(reader, img, path);
   MakeSpacingPositive(img, path);
   int dims[3];
   img->GetDimensions(dims);

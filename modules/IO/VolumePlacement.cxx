@@ -145,113 +145,127 @@ std::vector<std::vector<double>> NrrdDirections(const std::string& value, const 
 }
 } // namespace
 
-vtkSmartPointer<vtkImageData> PlaceNrrd(vtkImageData* img, const std::string& path)
+namespace
+{
+// The header's fields PlaceNrrd needs.
+struct NrrdHeader
+{
+  std::map<std::string, std::string> Keys;
+  std::vector<long long> Sizes;
+  std::vector<std::string> Kinds; // lower case
+  std::vector<std::vector<double>> Directions;
+};
+
+NrrdHeader ReadNrrdHeader(const std::string& path)
 {
   std::ifstream file(path, std::ios::binary);
-  auto keys = ReadNrrdFields(file);
-  std::vector<long long> sizes;
+  NrrdHeader h;
+  h.Keys = ReadNrrdFields(file);
+  std::istringstream sizes(h.Keys["sizes"]);
+  for (long long n; sizes >> n;)
   {
-    std::istringstream in(keys["sizes"]);
-    long long n;
-    while (in >> n)
-    {
-      sizes.push_back(n);
-    }
+    h.Sizes.push_back(n);
   }
-  std::vector<std::string> kinds;
+  std::istringstream kinds(h.Keys["kinds"]);
+  for (std::string k; kinds >> k;)
   {
-    std::istringstream in(keys["kinds"]);
-    std::string k;
-    while (in >> k)
-    {
-      std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
-      kinds.push_back(k);
-    }
+    std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
+    h.Kinds.push_back(k);
   }
-  const auto dirs = NrrdDirections(keys["space directions"], path);
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->ShallowCopy(img);
-  bool rebuilt = false;
+  h.Directions = NrrdDirections(h.Keys["space directions"], path);
+  return h;
+}
 
-  // vtkNrrdReader makes a first axis of <= 9 samples the components; undo it unless the header
-  // says the axis is not in space (a kind such as vector, or no space direction): three axes are
-  // a volume, and a minimal header (type, dimension, sizes, encoding) names neither (the voxels'
-  // memory order is the same either way).
+// vtkNrrdReader makes a first axis of <= 9 samples the components; undo it unless the header
+// says the axis is not in space (a kind such as vector, or no space direction): three axes are
+// a volume, and a minimal header (type, dimension, sizes, encoding) names neither (the voxels'
+// memory order is the same either way). Returns the image with that axis as x, or null.
+vtkSmartPointer<vtkImageData> ComponentsAsFirstAxis(vtkImageData* img, NrrdHeader& h)
+{
   vtkDataArray* s = img->GetPointData()->GetScalars();
-  const bool spatialFirst = sizes.size() == 3 &&
+  const auto& kinds = h.Kinds;
+  const auto& dirs = h.Directions;
+  const bool spatialFirst = h.Sizes.size() == 3 &&
     (kinds.size() == 3 ? (kinds[0] == "domain" || kinds[0] == "space") : (dirs.size() != 3 || !dirs[0].empty()));
-  if (spatialFirst && s && s->GetNumberOfComponents() > 1 && s->GetNumberOfComponents() == sizes[0])
+  if (!(spatialFirst && s && s->GetNumberOfComponents() > 1 && s->GetNumberOfComponents() == h.Sizes[0]))
   {
-    vtkSmartPointer<vtkDataArray> one = vtk::TakeSmartPointer(s->NewInstance());
-    one->SetName(s->GetName());
-    one->SetNumberOfComponents(1);
-    one->SetNumberOfTuples(s->GetNumberOfValues());
-    std::memcpy(one->GetVoidPointer(0), s->GetVoidPointer(0), s->GetNumberOfValues() * s->GetDataTypeSize());
-    out = vtkSmartPointer<vtkImageData>::New();
-    rebuilt = true;
-    out->SetDimensions(int(sizes[0]), int(sizes[1]), int(sizes[2]));
-    out->SetOrigin(img->GetOrigin());
-    out->GetPointData()->SetScalars(one);
-    double spacing[3] = { 1, 1, 1 };
-    std::istringstream in(keys["spacings"]);
-    for (double& h : spacing)
-    {
-      double x;
-      if (in >> x && x > 0 && std::isfinite(x))
-      {
-        h = x;
-      }
-    }
-    out->SetSpacing(spacing);
+    return nullptr;
   }
+  vtkSmartPointer<vtkDataArray> one = vtk::TakeSmartPointer(s->NewInstance());
+  one->SetName(s->GetName());
+  one->SetNumberOfComponents(1);
+  one->SetNumberOfTuples(s->GetNumberOfValues());
+  std::memcpy(one->GetVoidPointer(0), s->GetVoidPointer(0), s->GetNumberOfValues() * s->GetDataTypeSize());
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  out->SetDimensions(int(h.Sizes[0]), int(h.Sizes[1]), int(h.Sizes[2]));
+  out->SetOrigin(img->GetOrigin());
+  out->GetPointData()->SetScalars(one);
+  double spacing[3] = { 1, 1, 1 };
+  std::istringstream in(h.Keys["spacings"]);
+  for (double& d : spacing)
+  {
+    double x;
+    if (in >> x && x > 0 && std::isfinite(x))
+    {
+      d = x;
+    }
+  }
+  out->SetSpacing(spacing);
+  return out;
+}
 
-  // The spatial axes' directions (signs and rotation; VTK kept their lengths as the spacing).
-  double direction[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+// The spatial axes' directions (signs and rotation; VTK kept their lengths as the spacing).
+void ApplyNrrdDirections(vtkImageData* out, const NrrdHeader& h, double direction[9], const std::string& path)
+{
   std::vector<std::vector<double>> spatial;
-  std::copy_if(dirs.begin(), dirs.end(), std::back_inserter(spatial), [](const auto& v) { return !v.empty(); });
-  if (spatial.size() == 3)
+  std::copy_if(h.Directions.begin(), h.Directions.end(), std::back_inserter(spatial), [](const auto& v) { return !v.empty(); });
+  if (spatial.size() != 3)
   {
-    double spacing[3];
-    for (int c = 0; c < 3; ++c)
-    {
-      if (spatial[c].size() != 3)
-      {
-        throw Error("a space direction has " + std::to_string(spatial[c].size()) + " coordinates, expected 3", path);
-      }
-      const double len = std::sqrt(spatial[c][0] * spatial[c][0] + spatial[c][1] * spatial[c][1] + spatial[c][2] * spatial[c][2]);
-      if (!(len > 0) || !std::isfinite(len))
-      {
-        throw Error("a space direction has zero or non-finite length", path);
-      }
-      spacing[c] = len;
-      for (int r = 0; r < 3; ++r)
-      {
-        direction[3 * r + c] = spatial[c][r] / len;
-      }
-    }
-    out->SetSpacing(spacing);
+    return;
   }
-  std::string space = keys["space"];
+  double spacing[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    if (spatial[c].size() != 3)
+    {
+      throw Error("a space direction has " + std::to_string(spatial[c].size()) + " coordinates, expected 3", path);
+    }
+    const double len = std::sqrt(spatial[c][0] * spatial[c][0] + spatial[c][1] * spatial[c][1] + spatial[c][2] * spatial[c][2]);
+    if (!(len > 0) || !std::isfinite(len))
+    {
+      throw Error("a space direction has zero or non-finite length", path);
+    }
+    spacing[c] = len;
+    for (int r = 0; r < 3; ++r)
+    {
+      direction[3 * r + c] = spatial[c][r] / len;
+    }
+  }
+  out->SetSpacing(spacing);
+}
+
+// A RAS or LAS "space" becomes LPS, as ITK reads it. In a left-handed space vtkNrrdReader
+// reverses the rows of its y axis (the header's second axis, or its third when the first became
+// components) and keeps the origin: the first voxel is then the header's last along that axis.
+void ToLps(vtkImageData* out, NrrdHeader& h, bool rebuilt, double direction[9])
+{
+  std::string space = h.Keys["space"];
   std::transform(space.begin(), space.end(), space.begin(), [](unsigned char c) { return std::tolower(c); });
   const bool ras = space == "right-anterior-superior" || space == "ras" || space == "right-anterior-superior-time" || space == "rast";
   const bool las = space == "left-anterior-superior" || space == "las" || space == "left-anterior-superior-time" || space == "last";
   double origin[3];
   out->GetOrigin(origin);
-  // In a left-handed space vtkNrrdReader reverses the rows of its y axis (the header's second
-  // axis, or its third when the first became components) and keeps the origin: the first voxel
-  // is then the header's last along that axis.
   if (las || space == "3d-left-handed" || space == "3d-left-handed-time")
   {
     const int a = rebuilt ? 2 : 1;
     const int n = out->GetDimensions()[a];
-    const double h = out->GetSpacing()[a];
+    const double step = out->GetSpacing()[a];
     for (int r = 0; r < 3; ++r)
     {
-      origin[r] += direction[3 * r + a] * h * (n - 1);
+      origin[r] += direction[3 * r + a] * step * (n - 1);
       direction[3 * r + a] = -direction[3 * r + a];
     }
   }
-  // A RAS or LAS space becomes LPS, as ITK reads it.
   for (int r = 0; r < 2; ++r)
   {
     if (ras || (las && r == 1))
@@ -264,6 +278,34 @@ vtkSmartPointer<vtkImageData> PlaceNrrd(vtkImageData* img, const std::string& pa
     }
   }
   out->SetOrigin(origin);
+}
+} // namespace
+
+vtkSmartPointer<vtkImageData> NrrdAxesAsVtk(vtkImageData* img, const std::string& path)
+{
+  NrrdHeader h = ReadNrrdHeader(path);
+  vtkSmartPointer<vtkImageData> out = ComponentsAsFirstAxis(img, h);
+  if (!out)
+  {
+    out = vtkSmartPointer<vtkImageData>::New();
+    out->ShallowCopy(img);
+  }
+  return out;
+}
+
+vtkSmartPointer<vtkImageData> PlaceNrrd(vtkImageData* img, const std::string& path)
+{
+  NrrdHeader h = ReadNrrdHeader(path);
+  vtkSmartPointer<vtkImageData> out = ComponentsAsFirstAxis(img, h);
+  const bool rebuilt = out != nullptr;
+  if (!out)
+  {
+    out = vtkSmartPointer<vtkImageData>::New();
+    out->ShallowCopy(img);
+  }
+  double direction[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  ApplyNrrdDirections(out, h, direction, path);
+  ToLps(out, h, rebuilt, direction);
   out->SetDirectionMatrix(direction);
   return out;
 }

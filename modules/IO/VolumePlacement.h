@@ -39,6 +39,10 @@ ADAPTIVERTIO_EXPORT NiftiPlacementInfo NiftiPlacement(const std::string& path);
 /// RAS or LAS "space" is turned into LPS. A zero direction is an art::Error naming `path`.
 ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> PlaceNrrd(vtkImageData* img, const std::string& path);
 
+/// `img` as vtkNrrdReader placed it (origin, spacing), with only its first axis back from the
+/// components where the header makes it spatial (as PlaceNrrd does): the VTK frame.
+ADAPTIVERTIO_EXPORT vtkSmartPointer<vtkImageData> NrrdAxesAsVtk(vtkImageData* img, const std::string& path);
+
 /// The anatomical directions the voxel axes i, j, k point to in the LPS world, nibabel's axis
 /// codes: "RAS" for a volume whose direction is diag(-1, -1, 1), "LPS" for the identity.
 ADAPTIVERTIO_EXPORT std::string AxisCodes(vtkImageData* img);

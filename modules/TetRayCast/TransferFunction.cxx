@@ -3,6 +3,7 @@
 #include "TetMesh.h"
 
 #include "Error.h"
+#include "RegularFile.h"
 #include "MeanSpacing.h"
 
 #include <vtkColorTransferFunction.h>
@@ -510,6 +511,7 @@ TransferFunction TransferFunction::FromFile(const std::string& path)
 
 TransferFunction TransferFunction::ReadFile(const std::string& path)
 {
+  RequireRegularFile(path); // a FIFO or /dev/zero would block or read forever
   std::ifstream in(path);
   if (!in)
   {

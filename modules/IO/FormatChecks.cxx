@@ -1,0 +1,391 @@
+#include "FormatChecks.h"
+#include "AtomicFile.h"
+#include "Error.h"
+#include "RegularFile.h"
+
+#include <vtkImageReader.h>
+#include <vtkNew.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace art
+{
+namespace
+{
+long long FileSize(const std::string& path)
+{
+  std::error_code ec;
+  return static_cast<long long>(fs::file_size(path, ec));
+}
+
+std::string Truncated(long long need, long long have)
+{
+  return "truncated: the header promises " + std::to_string(need) + " data bytes, the file holds " +
+    std::to_string(std::max(0LL, have));
+}
+
+template <class T>
+T Little(const unsigned char* b)
+{
+  T v;
+  std::memcpy(&v, b, sizeof v);
+  return v;
+}
+
+// The first `n` whole numbers of a text file's first lines that are not comments ('#').
+std::vector<long long> LeadingCounts(const std::string& path, std::size_t n)
+{
+  std::ifstream in(path);
+  std::vector<long long> v;
+  std::string line;
+  while (v.size() < n && std::getline(in, line))
+  {
+    if (line.empty() || line[0] == '#')
+    {
+      continue;
+    }
+    std::istringstream s(line);
+    long long x;
+    while (v.size() < n && s >> x)
+    {
+      v.push_back(x);
+    }
+    if (!s.eof() && v.size() < n)
+    {
+      break;
+    }
+  }
+  return v;
+}
+} // namespace
+
+void CheckSlc(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  long long magic = 0, size[3] = { 0, 0, 0 }, bits = 0, unit = 0, origin = 0, modality = 0, compression = -1;
+  double spacing[3] = { 0, 0, 0 };
+  in >> magic >> size[0] >> size[1] >> size[2] >> bits >> spacing[0] >> spacing[1] >> spacing[2] >> unit >> origin >>
+    modality >> compression;
+  if (!in || magic != 11111)
+  {
+    throw Error("not an SLC file (no magic number 11111 and full header)", path);
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    if (size[a] < 1 || size[a] > 65535)
+    {
+      throw Error("SLC size " + std::to_string(size[a]) + " along " + "xyz"[a] + " is not 1..65535", path);
+    }
+    if (!(spacing[a] > 0) || !std::isfinite(spacing[a]))
+    {
+      throw Error(std::string("SLC spacing along ") + "xyz"[a] + " is not a positive number", path);
+    }
+  }
+  if (bits != 8 || (compression != 0 && compression != 1))
+  {
+    throw Error("SLC file of " + std::to_string(bits) + "-bit voxels or compression " + std::to_string(compression) +
+        ": VTK reads 8 bits, uncompressed (0) or run-length (1)",
+      path);
+  }
+  in.ignore(1); // the line end after the header
+  long long iconW = 0, iconH = 0;
+  std::string x;
+  in >> iconW >> iconH >> x;
+  if (!in || x != "X" || iconW < 0 || iconH < 0 || iconW * iconH > (1LL << 30))
+  {
+    throw Error("SLC icon size is missing or malformed", path);
+  }
+  const long long plane = size[0] * size[1];
+  std::vector<unsigned char> packed;
+  in.seekg(static_cast<std::streamoff>(in.tellg()) + 3 * iconW * iconH);
+  for (long long z = 0; z < size[2]; ++z)
+  {
+    if (compression == 0)
+    {
+      packed.resize(static_cast<std::size_t>(plane));
+      if (!in.read(reinterpret_cast<char*>(packed.data()), plane))
+      {
+        throw Error("truncated: SLC slice " + std::to_string(z) + " of " + std::to_string(size[2]) + " is missing", path);
+      }
+      continue;
+    }
+    long long bytes = -1;
+    in >> bytes >> x;
+    if (!in || x != "X" || bytes < 0 || bytes > 2 * plane + 16)
+    {
+      throw Error("SLC slice " + std::to_string(z) + " has no valid compressed size", path);
+    }
+    in.ignore(0);
+    packed.resize(static_cast<std::size_t>(bytes));
+    if (!in.read(reinterpret_cast<char*>(packed.data()), bytes))
+    {
+      throw Error("truncated: SLC slice " + std::to_string(z) + " of " + std::to_string(size[2]) + " is missing", path);
+    }
+    // Runs as vtkSLCReader decodes them: a count in the low 7 bits, then that many bytes (high
+    // bit set) or one byte repeated; a zero count ends the slice. They must fill it exactly.
+    long long out = 0;
+    std::size_t p = 0;
+    for (;;)
+    {
+      if (p >= packed.size())
+      {
+        throw Error("SLC slice " + std::to_string(z) + "'s runs end without their closing zero", path);
+      }
+      const unsigned char c = packed[p++];
+      const int n = c & 0x7F;
+      if (n == 0)
+      {
+        break;
+      }
+      const std::size_t used = (c & 0x80) ? static_cast<std::size_t>(n) : 1;
+      if (p + used > packed.size() || out + n > plane)
+      {
+        throw Error("SLC slice " + std::to_string(z) + "'s runs overrun the slice or its bytes", path);
+      }
+      p += used;
+      out += n;
+    }
+    if (out != plane)
+    {
+      throw Error("SLC slice " + std::to_string(z) + " decodes to " + std::to_string(out) + " of its " +
+          std::to_string(plane) + " voxels",
+        path);
+    }
+  }
+}
+
+void CheckMrc(const std::string& path)
+{
+  unsigned char h[1024] = {};
+  std::ifstream in(path, std::ios::binary);
+  if (!in.read(reinterpret_cast<char*>(h), sizeof h))
+  {
+    throw Error("not an MRC file (shorter than its 1024-byte header)", path);
+  }
+  const std::int32_t n[3] = { Little<std::int32_t>(h), Little<std::int32_t>(h + 4), Little<std::int32_t>(h + 8) };
+  const std::int32_t mode = Little<std::int32_t>(h + 12), extended = Little<std::int32_t>(h + 92);
+  const int bytes = mode == 0 ? 1 : mode == 1 ? 2 : mode == 2 ? 4 : mode == 6 ? 2 : 0;
+  if (bytes == 0)
+  {
+    throw Error("MRC mode " + std::to_string(mode) + " is not one VTK reads (0 int8, 1 int16, 2 float32, 6 uint16)", path);
+  }
+  long long voxels = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (n[a] < 1 || n[a] > 1 << 20)
+    {
+      throw Error(std::string("MRC size along ") + "xyz"[a] + " is " + std::to_string(n[a]), path);
+    }
+    voxels *= n[a];
+  }
+  if (extended < 0)
+  {
+    throw Error("MRC extended header size is negative", path);
+  }
+  const long long need = voxels * bytes, have = FileSize(path) - 1024 - extended;
+  if (have < need)
+  {
+    throw Error(Truncated(need, have), path);
+  }
+}
+
+std::string CheckAnalyze(const std::string& path)
+{
+  const fs::path p(path);
+  const std::string header = LowerExtension(path) == ".img" ? fs::path(p).replace_extension(".hdr").string() : path;
+  const std::string image = fs::path(header).replace_extension(".img").string();
+  for (const std::string& f : { header, image })
+  {
+    const std::string problem = RegularFileProblem(f);
+    if (!problem.empty())
+    {
+      throw Error("the Analyze " + std::string(&f == &header ? "header" : "image") + " '" +
+          fs::path(f).filename().string() + "': " + problem,
+        path);
+    }
+  }
+  unsigned char h[348] = {};
+  std::ifstream in(header, std::ios::binary);
+  in.read(reinterpret_cast<char*>(h), sizeof h);
+  std::int32_t size = Little<std::int32_t>(h);
+  const bool swap = size != 348;
+  auto i16 = [&](int at) {
+    unsigned char b[2] = { h[at], h[at + 1] };
+    if (swap)
+    {
+      std::swap(b[0], b[1]);
+    }
+    return Little<std::int16_t>(b);
+  };
+  if (!in || (size != 348 && size != 0x5C010000))
+  {
+    throw Error("not an Analyze 7.5 header (sizeof_hdr is not 348)", header);
+  }
+  const int ndim = i16(40), bitpix = i16(72);
+  if (ndim < 1 || ndim > 7 || bitpix <= 0 || bitpix % 8 != 0)
+  {
+    throw Error("Analyze header has " + std::to_string(ndim) + " dimensions of " + std::to_string(bitpix) + " bits", header);
+  }
+  long long voxels = 1;
+  for (int d = 1; d <= std::min(ndim, 3); ++d)
+  {
+    const int n = i16(40 + 2 * d);
+    if (n < 1)
+    {
+      throw Error("Analyze size of dimension " + std::to_string(d) + " is " + std::to_string(n), header);
+    }
+    voxels *= n;
+  }
+  const long long need = voxels * bitpix / 8, have = FileSize(image);
+  if (have < need)
+  {
+    throw Error(Truncated(need, have), image);
+  }
+  return header;
+}
+
+void CheckAvsUcd(const std::string& path)
+{
+  // ASCII: "nodes cells node-data cell-data model-data" after the comments; binary files start
+  // with a version byte and are checked by the reader.
+  std::ifstream in(path, std::ios::binary);
+  const int first = in.peek();
+  if (first == 7)
+  {
+    return;
+  }
+  const std::vector<long long> c = LeadingCounts(path, 5);
+  if (c.size() < 5 || std::any_of(c.begin(), c.end(), [](long long x) { return x < 0; }))
+  {
+    throw Error("not an AVS UCD file (no line of five counts: nodes cells node-data cell-data model-data)", path);
+  }
+  // Each node and each cell takes a line of at least a few bytes.
+  if ((c[0] + c[1]) * 4 > FileSize(path))
+  {
+    throw Error(Truncated((c[0] + c[1]) * 4, FileSize(path)) + " (" + std::to_string(c[0]) + " nodes, " +
+        std::to_string(c[1]) + " cells)",
+      path);
+  }
+}
+
+void CheckTecplot(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  std::string upper = head;
+  std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return std::toupper(c); });
+  if (head.rfind("#!TDV", 0) == 0)
+  {
+    throw Error("is a binary Tecplot file (.plt), which VTK does not read: save it as ASCII Tecplot", path);
+  }
+  if (upper.find("ZONE") == std::string::npos || upper.find("VARIABLES") == std::string::npos)
+  {
+    throw Error("not an ASCII Tecplot file (no VARIABLES and ZONE lines)", path);
+  }
+}
+
+void CheckGambit(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string line;
+  for (int i = 0; i < 6 && std::getline(in, line); ++i)
+  {
+  }
+  long long numnp = -1, nelem = -1, ngrps = -1, nbsets = -1, ndfcd = -1, ndfvl = -1;
+  in >> numnp >> nelem >> ngrps >> nbsets >> ndfcd >> ndfvl;
+  if (!in || numnp < 0 || nelem < 0 || ngrps < 0 || nbsets < 0 || (ndfcd != 2 && ndfcd != 3))
+  {
+    throw Error("not a GAMBIT neutral file (no NUMNP NELEM NGRPS NBSETS NDFCD NDFVL counts)", path);
+  }
+  if ((numnp + nelem) * 4 > FileSize(path))
+  {
+    throw Error(Truncated((numnp + nelem) * 4, FileSize(path)), path);
+  }
+}
+
+void CheckByu(const std::string& path)
+{
+  const std::vector<long long> c = LeadingCounts(path, 4);
+  if (c.size() < 4 || c[0] < 1 || c[1] < 0 || c[2] < 0 || c[3] < 0)
+  {
+    throw Error("not a BYU file (no line of counts: parts points polygons edges)", path);
+  }
+  if ((c[1] * 3 + c[3]) * 2 > FileSize(path))
+  {
+    throw Error(Truncated((c[1] * 3 + c[3]) * 2, FileSize(path)) + " (" + std::to_string(c[1]) + " points, " +
+        std::to_string(c[3]) + " corners)",
+      path);
+  }
+}
+
+vtkSmartPointer<vtkAlgorithm> BioRadReader(const std::string& path)
+{
+  unsigned char h[76] = {};
+  std::ifstream in(path, std::ios::binary);
+  in.read(reinterpret_cast<char*>(h), sizeof h);
+  const int nx = Little<std::uint16_t>(h), ny = Little<std::uint16_t>(h + 2), npic = Little<std::uint16_t>(h + 4);
+  const int byteFormat = Little<std::int16_t>(h + 14), fileId = Little<std::int16_t>(h + 54);
+  if (!in || fileId != 12345)
+  {
+    throw Error("not a BioRad .pic file (no file id 12345 at byte 54)", path);
+  }
+  if (nx < 1 || ny < 1 || npic < 1)
+  {
+    throw Error("BioRad sizes " + std::to_string(nx) + " x " + std::to_string(ny) + " x " + std::to_string(npic) +
+        " are not positive",
+      path);
+  }
+  const int bytes = byteFormat == 1 ? 1 : 2;
+  const long long need = static_cast<long long>(nx) * ny * npic * bytes;
+  if (FileSize(path) - 76 < need)
+  {
+    throw Error(Truncated(need, FileSize(path) - 76), path);
+  }
+  // Notes follow the voxels: 16-byte headers and 80 characters each; "AXIS_2 001 start step
+  // microns" (x), AXIS_3 (y) and AXIS_4 (z) give the spacing.
+  double spacing[3] = { 1, 1, 1 };
+  in.seekg(76 + need);
+  unsigned char note[96];
+  for (int k = 0; k < 10000 && in.read(reinterpret_cast<char*>(note), sizeof note); ++k)
+  {
+    const std::string text(reinterpret_cast<char*>(note) + 16, strnlen(reinterpret_cast<char*>(note) + 16, 80));
+    std::istringstream s(text);
+    std::string axis, code;
+    double start = 0, step = 0;
+    if (s >> axis >> code >> start >> step && axis.rfind("AXIS_", 0) == 0 && code == "001")
+    {
+      const int a = std::atoi(axis.c_str() + 5) - 2;
+      if (a >= 0 && a < 3 && step > 0 && std::isfinite(step))
+      {
+        spacing[a] = step;
+      }
+    }
+    if (Little<std::int32_t>(note + 2) == 0)
+    {
+      break; // the last note
+    }
+  }
+  vtkNew<vtkImageReader> r;
+  r->SetFileName(path.c_str());
+  r->SetFileDimensionality(3);
+  r->SetHeaderSize(76);
+  r->SetDataScalarType(bytes == 1 ? VTK_UNSIGNED_CHAR : VTK_UNSIGNED_SHORT);
+  r->SetDataByteOrderToLittleEndian();
+  r->SetDataExtent(0, nx - 1, 0, ny - 1, 0, npic - 1);
+  r->SetDataSpacing(spacing);
+  r->FileLowerLeftOn();
+  r->SetScalarArrayName("BioRad");
+  return vtkSmartPointer<vtkAlgorithm>(r.GetPointer());
+}
+} // namespace art
