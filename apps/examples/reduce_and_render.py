@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""A VTK pipeline with AdaptiveRT: read a CT volume, reduce it to an adaptive tetrahedral mesh
+"""A VTK pipeline with AdaptiveRT: read a CT volume (any format adaptivert reads, through
+adaptivert.vtkAdaptiveRTReader: .mha .nii.gz .nrrd .vti, DICOM folders, ...), reduce it to an adaptive tetrahedral mesh
 with vtkAdaptiveTetReducer (for the transfer function it will be shown with), and volume-render the mesh with vtkTetRayCastMapper in an ordinary
 vtkRenderWindow; then save a screenshot.
 
@@ -12,7 +13,7 @@ import sys
 
 import adaptivert
 from vtkmodules.vtkCommonDataModel import vtkPiecewiseFunction
-from vtkmodules.vtkIOImage import vtkMetaImageReader, vtkPNGWriter
+from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
                                          vtkVolume, vtkVolumeProperty, vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL render window)
@@ -27,8 +28,13 @@ volume_file = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "..
 out_file = sys.argv[2] if len(sys.argv) > 2 else "reduce_and_render.png"
 tets = int(sys.argv[3]) if len(sys.argv) > 3 else 30000
 
-reader = vtkMetaImageReader()
+# The reader adaptivert itself uses: the same placement (LPS patient coordinates; SetFrame("vtk")
+# for VTK's and ParaView's), the same checks, and one line saying what is wrong with a bad file.
+reader = adaptivert.vtkAdaptiveRTReader()
 reader.SetFileName(volume_file)
+reader.Update()
+if reader.GetErrorMessage():
+    sys.exit("reduce_and_render.py: " + reader.GetErrorMessage())
 
 # A CT transfer function: soft tissue faint, bone opaque (HU).
 colour = vtkColorTransferFunction()

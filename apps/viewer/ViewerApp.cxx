@@ -32,7 +32,7 @@ ViewerApp::ViewerApp(ViewerOptions options)
 {
   Impl->Opt = std::move(options);
   const ViewerOptions& o = Impl->Opt;
-  const art::DataKind kind = art::KindOf(o.File); // before loading: a large scene need not be read to say this
+  const art::DataKind kind = art::KindOf(o.File, o.Load); // before loading: a large scene need not be read to say this
   if (o.TetsGiven && kind != art::DataKind::Volume)
   {
     // A mesh or a triangle scene is shown as it is: its --tets levels were ignored without a word.
@@ -46,7 +46,9 @@ ViewerApp::ViewerApp(ViewerOptions options)
     throw UsageError(std::string(o.Array.empty() ? "--tf" : "--array") + " applies to volumes and meshes; " + o.File +
       " is a triangle scene, shown in its own colours");
   }
-  Impl->Scene = LoadScene(o.File, o.TransferFunction, o.Array);
+  art::LoadOptions load = o.Load;
+  load.Array = o.Array;
+  Impl->Scene = LoadScene(o.File, o.TransferFunction, load);
   if (!Impl->Scene.Surface && !Impl->Scene.Image && !Impl->Scene.Note.empty())
   {
     Impl->Say(Impl->Scene.Note); // a mesh's: cells tetrahedralised or left out, points dropped or merged

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
 namespace view
 {
@@ -42,6 +43,10 @@ std::string UsageText()
          "  --tf NAME|FILE       transfer function: auto (ct-skin-bone on CT in Hounsfield units, else\n"
          "                       grey-ramp), ct-skin-bone, ct-bone, grey-ramp, constant, or a file of\n"
          "                       'scalar r g b opacity' lines or a ParaView preset .json (default auto)\n"
+         "  --frame patient|vtk  place a volume in LPS patient coordinates (default) or as VTK's readers\n"
+         "                       and ParaView do (origin and spacing)\n"
+         "  --raw-dims X,Y,Z --raw-type T [--raw-spacing X,Y,Z --raw-header B --raw-endian little|big]\n"
+         "                       read FILE as raw voxels\n"
          "  --script FILE        run scripted actions (one per line: key K | wait S | wait-reduction |\n"
          "                       azimuth DEG | elevation DEG | roll DEG | zoom F | drag DX DY |\n"
          "                       screenshot FILE)\n"
@@ -86,7 +91,8 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
       a = a.substr(0, eq);
       inlineValue = true;
     }
-    static const char* withValue[] = { "--size", "--tets", "--array", "--tf", "--script", "--screenshot" };
+    static const char* withValue[] = { "--size", "--tets", "--array", "--tf", "--script", "--screenshot", "--frame",
+      "--raw-dims", "--raw-type", "--raw-spacing", "--raw-header", "--raw-endian", "--raw-components" };
     if (std::find(std::begin(withValue), std::end(withValue), a) == std::end(withValue))
     {
       throw UsageError("unknown option '" + a + "'");
@@ -99,7 +105,26 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
       }
       value = args[++i];
     }
-    if (a == "--size")
+    if (a == "--frame")
+    {
+      if (value != "patient" && value != "vtk")
+      {
+        throw UsageError("--frame is patient or vtk, got '" + value + "'");
+      }
+      o.Load.Placement = art::ParseFrame(value);
+    }
+    else if (a.rfind("--raw-", 0) == 0)
+    {
+      try
+      {
+        art::SetRawOption(o.Load.Raw, a.substr(2), value);
+      }
+      catch (const std::invalid_argument& e)
+      {
+        throw UsageError(e.what());
+      }
+    }
+    else if (a == "--size")
     {
       const auto x = value.find_first_of("xX");
       if (x == std::string::npos)
@@ -193,6 +218,10 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
   if (o.Tets.empty() && o.TetPercents.empty())
   {
     o.Tets = { 2000, 10000, 40000 };
+  }
+  if ((o.Load.Raw.Given() || !o.Load.Raw.Type.empty()) && !(o.Load.Raw.Given() && !o.Load.Raw.Type.empty()))
+  {
+    throw UsageError("a raw volume needs both --raw-dims X,Y,Z and --raw-type TYPE");
   }
   return o;
 }

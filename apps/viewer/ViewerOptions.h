@@ -4,6 +4,8 @@
 #define art_ViewerOptions_h
 
 #include <stdexcept>
+#include "DataLoader.h"
+
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@ struct ViewerOptions
   std::vector<double> TetPercents; ///< more budgets as percentages of the voxel count
   bool TetsGiven = false;         ///< --tets was given (it applies to volumes only)
   std::string Array;             ///< point (or cell) array to show (default: the active scalars)
+  art::LoadOptions Load;         ///< --frame and a raw volume's --raw-* layout (Array is set on use)
   std::string TransferFunction = "auto";
   bool TfGiven = false;           ///< --tf was given (it applies to volumes and meshes only)
   std::string Script;            ///< file of scripted actions (tests, demos)

@@ -50,13 +50,14 @@ void ViewerScene::AddLevel(vtkSmartPointer<vtkUnstructuredGrid> grid, long long 
   LevelLabels.push_back(buf);
 }
 
-ViewerScene LoadScene(const std::string& file, const std::string& tf, const std::string& array)
+ViewerScene LoadScene(const std::string& file, const std::string& tf, const art::LoadOptions& load)
 {
   ViewerScene s;
+  const std::string& array = load.Array;
   std::optional<art::TetMesh> mesh; // a mesh's used, merged points, for a preset's unit distance
-  const art::DataKind kind = art::KindOf(file);
+  const art::DataKind kind = art::KindOf(file, load);
   vtkSmartPointer<vtkDataObject> data =
-    kind == art::DataKind::Volume ? vtkSmartPointer<vtkDataObject>(art::LoadVolume(file, array)) : art::Load(file);
+    kind == art::DataKind::Volume ? vtkSmartPointer<vtkDataObject>(art::LoadVolume(file, load)) : art::Load(file);
   if (kind == art::DataKind::Surface)
   {
     auto* pd = vtkPolyData::SafeDownCast(data);

@@ -4,6 +4,7 @@
 #ifndef art_ViewerScene_h
 #define art_ViewerScene_h
 
+#include "DataLoader.h"
 #include "Box3.h"
 #include "SurfaceTraceView.h"
 #include "TransferFunction.h"
@@ -39,7 +40,7 @@ struct ViewerScene
 
 /// Loads `file` (volume, tet mesh or triangle scene) with the transfer-function preset `tf`.
 /// Throws art::Error naming the file for anything wrong with it.
-ViewerScene LoadScene(const std::string& file, const std::string& tf, const std::string& array = {});
+ViewerScene LoadScene(const std::string& file, const std::string& tf, const art::LoadOptions& load = {});
 
 /// 12345 -> "12,345".
 std::string Grouped(long long n);

@@ -50,6 +50,11 @@ struct LoadOptions
   RawLayout Raw;
 };
 
+/// Sets one field of `raw` from its command-line text: option "raw-dims" ("X,Y,Z"), "raw-type",
+/// "raw-spacing" ("X,Y,Z"), "raw-header" (bytes), "raw-endian" (little|big), "raw-components".
+/// A malformed value throws std::invalid_argument with a message naming the option.
+ADAPTIVERTIO_EXPORT void SetRawOption(RawLayout& raw, const std::string& option, const std::string& value);
+
 /// "patient" or "vtk"; anything else is an art::Error.
 ADAPTIVERTIO_EXPORT Frame ParseFrame(const std::string& name);
 ADAPTIVERTIO_EXPORT const char* FrameName(Frame f);

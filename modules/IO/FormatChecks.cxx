@@ -98,9 +98,9 @@ void CheckSlc(const std::string& path)
   }
   in.ignore(1); // the line end after the header
   long long iconW = 0, iconH = 0;
-  std::string x;
+  char x = 0; // "X" and then the bytes, with no blank between
   in >> iconW >> iconH >> x;
-  if (!in || x != "X" || iconW < 0 || iconH < 0 || iconW * iconH > (1LL << 30))
+  if (!in || x != 'X' || iconW < 0 || iconH < 0 || iconW * iconH > (1LL << 30))
   {
     throw Error("SLC icon size is missing or malformed", path);
   }
@@ -120,11 +120,10 @@ void CheckSlc(const std::string& path)
     }
     long long bytes = -1;
     in >> bytes >> x;
-    if (!in || x != "X" || bytes < 0 || bytes > 2 * plane + 16)
+    if (!in || x != 'X' || bytes < 0 || bytes > 2 * plane + 16)
     {
       throw Error("SLC slice " + std::to_string(z) + " has no valid compressed size", path);
     }
-    in.ignore(0);
     packed.resize(static_cast<std::size_t>(bytes));
     if (!in.read(reinterpret_cast<char*>(packed.data()), bytes))
     {

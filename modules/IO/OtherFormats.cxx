@@ -104,10 +104,6 @@ vtkSmartPointer<vtkAlgorithm> StackReader(const std::vector<std::string>& files,
   {
     r->SetDataSpacing(raw.Spacing[0], raw.Spacing[1], raw.Spacing[2]);
   }
-  if (auto* tiff = vtkTIFFReader::SafeDownCast(r))
-  {
-    tiff->SetOrientationType(4); // rows top-down as every other slice reader gives them (ORIENTATION_BOTLEFT)
-  }
   return r;
 }
 
@@ -187,7 +183,6 @@ vtkSmartPointer<vtkAlgorithm> TiffReader(const std::string& path)
     throw Error("is not a TIFF file VTK reads", path);
   }
   r->SetFileName(path.c_str());
-  r->SetOrientationType(4);
   RunReaderInformation(r, path);
   int e[6];
   r->GetDataExtent(e);

@@ -1,5 +1,6 @@
 #include "StreamCapture.h"
 
+#include <vtkLogger.h>
 #include <vtkObjectFactory.h>
 
 #include <mutex>
@@ -25,6 +26,8 @@ StreamCapture::StreamCapture()
   CaptureMutex().lock();
   OldErr = std::cerr.rdbuf(Err.rdbuf());
   OldOut = std::cout.rdbuf(Out.rdbuf());
+  OldVerbosity = vtkLogger::GetCurrentVerbosityCutoff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // VTK's macros log there too
   OldWindow = vtkOutputWindow::GetInstance();
   Window = vtkSmartPointer<CapturingOutputWindow>::New();
   vtkOutputWindow::SetInstance(Window);
@@ -33,6 +36,7 @@ StreamCapture::StreamCapture()
 StreamCapture::~StreamCapture()
 {
   vtkOutputWindow::SetInstance(OldWindow);
+  vtkLogger::SetStderrVerbosity(static_cast<vtkLogger::Verbosity>(OldVerbosity));
   std::cerr.rdbuf(OldErr);
   std::cout.rdbuf(OldOut);
   CaptureMutex().unlock();

@@ -52,6 +52,7 @@ private:
   std::streambuf* OldErr;
   std::streambuf* OldOut;
   vtkSmartPointer<vtkOutputWindow> OldWindow;
+  int OldVerbosity = 0;
   vtkSmartPointer<CapturingOutputWindow> Window;
 };
 } // namespace art

@@ -26,6 +26,7 @@
 #include <vtkMetaImageReader.h>
 #include <vtkNIFTIImageReader.h>
 #include <vtkNrrdReader.h>
+#include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkXMLImageDataReader.h>
 #include <vtkXMLPImageDataReader.h>
@@ -245,6 +246,17 @@ void MakeSpacingPositive(vtkImageData* img, const std::string& path)
 
 namespace
 {
+// vtkNrrdReader itself: in a Python session that imported all of VTK, the object factory hands
+// out vtkPNrrdReader, which refuses to read without an MPI controller.
+vtkSmartPointer<vtkAlgorithm> PlainNrrdReader(const std::string& path)
+{
+  vtkObjectFactory::SetAllEnableFlags(0, "vtkNrrdReader");
+  auto r = vtkSmartPointer<vtkNrrdReader>::New();
+  vtkObjectFactory::SetAllEnableFlags(1, "vtkNrrdReader");
+  r->SetFileName(path.c_str());
+  return r;
+}
+
 // The voxels read against the extent the reader's header promised (a reader stopping short left
 // a smaller or empty array behind the full extent).
 void CheckVoxelCount(vtkAlgorithm* reader, vtkImageData* img, const std::string& path)
@@ -355,7 +367,7 @@ vtkSmartPointer<vtkImageData> LoadWholeVolume(const std::string& path, const Loa
   else
   {
     CheckNrrd(path);
-    reader = FileReader<vtkNrrdReader>(path);
+    reader = PlainNrrdReader(path);
   }
   RunReader(reader, path);
   auto img = vtkSmartPointer<vtkImageData>::New();

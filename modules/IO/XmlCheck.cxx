@@ -138,10 +138,6 @@ void CheckGeometry(const Attributes& a, const std::string& element, const std::s
           " finite numbers",
         path);
     }
-    if (std::string(key) == "Spacing" && std::any_of(v.begin(), v.end(), [](double x) { return x == 0; }))
-    {
-      throw Error(element + " Spacing=\"" + it->second.substr(0, 60) + "\" has a zero spacing", path);
-    }
   }
 }
 
@@ -302,7 +298,7 @@ void ScanTags(const std::string& t, Scan& s, const std::string& path)
       {
         return; // the part read ends inside a tag: what was read is checked
       }
-      throw Error("malformed XML: the tag <" + name.substr(0, 30) + "> is not closed", path);
+      throw Error("cannot read: malformed XML: the tag <" + name.substr(0, 30) + "> is not closed", path);
     }
     CheckElement(name, a, s, path);
     p = end;

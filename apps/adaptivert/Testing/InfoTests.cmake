@@ -122,3 +122,28 @@ add_test(NAME io.read_memory_check COMMAND bash "${_mem}" "${_w}" "3000 3000 300
   "big.mhd: holding its 3000 x 3000 x 3000 voxels needs about 54 GB, more than the .* GB of memory available; crop or downsample it first"
   - -- "$<TARGET_FILE:adaptivert>" info "${_w}/big.mhd")
 set_tests_properties(io.read_memory_check PROPERTIES LABELS "unit" TIMEOUT 60)
+# The corpus of bad files (tests/data/corpus, made by its make_corpus.py and grown by the fuzzing
+# targets): VTK's readers crashed on, hung on or misread each; every one is one line, exit 1.
+add_test(NAME cli.info_bad_corpus COMMAND ${CMAKE_COMMAND} "-DPROGRAM=$<TARGET_FILE:adaptivert>" "-DARGS=info"
+  "-DDIR=${CMAKE_SOURCE_DIR}/tests/data/corpus" -P "${CMAKE_CURRENT_LIST_DIR}/corpus_check.cmake")
+add_test(NAME cli.render_bad_corpus COMMAND ${CMAKE_COMMAND} "-DPROGRAM=$<TARGET_FILE:adaptivert>"
+  "-DARGS=render|-o|${ART_TEST_OUTPUT}/never-corpus.png|--size|20x20"
+  "-DDIR=${CMAKE_SOURCE_DIR}/tests/data/corpus" -P "${CMAKE_CURRENT_LIST_DIR}/corpus_check.cmake")
+set_tests_properties(cli.info_bad_corpus cli.render_bad_corpus PROPERTIES LABELS unit)
+# A FIFO, a device, a file only another user may read, a full disk, a write-protected output and
+# raw voxels, made at run time (files_check.sh; 77 = skipped where the machine cannot).
+foreach(_mode fifo permission diskfull protected raw frame)
+  add_test(NAME cli.files_${_mode} COMMAND bash "${CMAKE_CURRENT_LIST_DIR}/files_check.sh" "$<TARGET_FILE:adaptivert>"
+    ${_mode} "${ART_TEST_OUTPUT}/files_${_mode}" "${CMAKE_SOURCE_DIR}")
+  set_tests_properties(cli.files_${_mode} PROPERTIES LABELS unit SKIP_RETURN_CODE 77 TIMEOUT 120)
+endforeach()
+# A .vtp of triangle strips counts their triangles (it showed 0); a volume names its arrays.
+art_expect_test(cli.info_strip_triangles EXIT 0 STDOUT "strips +18 \\(96 triangles\\).*triangles +96"
+  ARGS info "${CMAKE_SOURCE_DIR}/tests/data/sphere-strips.vtp")
+art_expect_test(cli.info_volume_arrays EXIT 0 STDOUT "point data +MetaImage .short x1, -1024..2697"
+  ARGS info "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha")
+# MetaIO printed eight lines of its own before our one.
+art_expect_test(cli.info_metaio_quiet EXIT 1 STDERR "mha-bad-ndims.mha: " ONE_LINE_STDERR
+  ARGS info "${CMAKE_SOURCE_DIR}/tests/data/corpus/mha-bad-ndims.mha")
+art_expect_test(cli.info_far_vertex EXIT 1 STDERR "vtu-far-vertex.vtu: a cell refers to point 1000000000 of 27"
+  ONE_LINE_STDERR ARGS info "${CMAKE_SOURCE_DIR}/tests/data/corpus/vtu-far-vertex.vtu")

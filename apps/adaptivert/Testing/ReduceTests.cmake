@@ -94,3 +94,5 @@ art_expect_test(cli.reduce_past_full_resolution EXIT 0
 art_expect_test(cli.render_past_full_resolution EXIT 0
   STDOUT "note +--tets 1000 is at least the 40 tets .*mesh +full-resolution tets \\(5 per voxel cell\\): 40 tets"
   ARGS render "${_bad}/rgb-3x3x3.vti" -o "${_out}/full-res.png" --array rgb:1 --tets 1000 --size 16x16 --no-error -q)
+art_expect_test(cli.reduce_tets_hexadecimal EXIT 2 STDERR "--tets wants a positive number or a percentage, got '0x10'"
+  ONE_LINE_STDERR ARGS reduce "${_ct}" "${ART_TEST_OUTPUT}/never.vtu" --tets 0x10)

@@ -250,3 +250,14 @@ art_expect_test(cli.render_save_mesh_needs_reduction EXIT 2 ONE_LINE_STDERR
   ARGS render "${_ct}" -o "${_tmp}/x.png" --save-mesh "${_tmp}/x.vtu")
 art_expect_test(cli.render_save_mesh_vtu EXIT 2 ONE_LINE_STDERR STDERR "--save-mesh writes a .vtu, got '.*x.vtk'"
   ARGS render "${_ct}" -o "${_tmp}/x.png" --tets 100 --save-mesh "${_tmp}/x.vtk")
+# Values that contradict each other or are not decimal numbers were taken without a word.
+art_expect_test(cli.render_reference_with_tets EXIT 2 STDERR "--reference renders the full-resolution voxels; --tets"
+  ONE_LINE_STDERR ARGS render "${_ct}" -o "${ART_TEST_OUTPUT}/never.png" --reference --tets 500)
+art_expect_test(cli.render_relocate_both EXIT 2 STDERR "--relocate and --no-relocate contradict each other"
+  ONE_LINE_STDERR ARGS render "${_ct}" -o "${ART_TEST_OUTPUT}/never.png" --tets 500 --relocate --no-relocate)
+art_expect_test(cli.render_tets_hexadecimal EXIT 2 STDERR "--tets wants a positive number or a percentage, got '0x10'"
+  ONE_LINE_STDERR ARGS render "${_ct}" -o "${ART_TEST_OUTPUT}/never.png" --tets 0x10)
+art_expect_test(cli.render_zoom_hexadecimal EXIT 2 STDERR "option '--zoom' expects a number, got '0x2'"
+  ONE_LINE_STDERR ARGS render "${_ct}" -o "${ART_TEST_OUTPUT}/never.png" --zoom 0x2)
+art_expect_test(cli.render_frame_on_surface EXIT 2 STDERR "--frame does not apply to a surface"
+  ONE_LINE_STDERR ARGS render "${CMAKE_SOURCE_DIR}/data/am_underworks.ply" -o "${ART_TEST_OUTPUT}/never.png" --frame vtk)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end checks of `adaptivert batch` on a small real job (3 cameras x 2 settings plus a
 # reference per camera = 9 frames):
-#  1. a batch killed mid-way resumes and finishes, losing no finished frame;
+#  1. a batch killed mid-way leaves no render running, resumes and finishes, losing no frame;
 #  2. two processes sharing the job render every frame exactly once;
 #  3. the CSV has a row per frame with time and PSNR, and the chart is a PNG.
 set -euo pipefail
@@ -32,6 +32,14 @@ for _ in $(seq 600); do
 done
 kill -9 "$pid" 2>/dev/null || true
 wait "$pid" 2>/dev/null || true
+# The killed batch takes the frame it was rendering with it (its render child kept running).
+for _ in $(seq 20); do
+  pgrep -f -- "render .* -o $out/" > /dev/null || break
+  sleep 0.1
+done
+if pgrep -f -- "render .* -o $out/" > /dev/null; then
+  fail "a render of the killed batch is still running: $(pgrep -af -- "render .* -o $out/")"
+fi
 kept=$(results "$out"); echo "after kill: $kept results at $(date +%T)" >&2
 [ "$kept" -ge 2 ] || fail "no frame finished before the kill"
 for r in "$out"/*.result.json; do

@@ -63,6 +63,17 @@ Json& Json::Set(const std::string& k, const std::vector<double>& v)
   return *this;
 }
 
+Json& Json::Set(const std::string& k, const std::vector<std::string>& v)
+{
+  std::string s = "[";
+  for (size_t i = 0; i < v.size(); ++i)
+  {
+    s += (i ? "," : "") + Quote(v[i]);
+  }
+  Items.emplace_back(k, s + "]");
+  return *this;
+}
+
 Json& Json::Set(const std::string& k, const std::vector<Json>& a)
 {
   std::string s = "[";

@@ -17,6 +17,7 @@ public:
   Json& Set(const std::string& key, int v) { return Set(key, static_cast<long long>(v)); }
   Json& Set(const std::string& key, bool v);
   Json& Set(const std::string& key, const std::vector<double>& v);
+  Json& Set(const std::string& key, const std::vector<std::string>& v);
   Json& Set(const std::string& key, const Json& object);
   Json& Set(const std::string& key, const std::vector<Json>& array);
   std::string Str() const;

@@ -141,6 +141,19 @@ std::string Options::Get(const std::string& name) const
   return s == Specs.end() ? std::string() : s->second.def;
 }
 
+bool IsDecimalNumber(const std::string& v)
+{
+  // Digits, a point, an exponent, a sign: strtod also takes hexadecimal ("0x10" read as 16),
+  // "inf", "nan" and leading blanks, which no option means.
+  if (v.empty() || v.find_first_not_of("0123456789.eE+-") != std::string::npos)
+  {
+    return false;
+  }
+  char* end = nullptr;
+  std::strtod(v.c_str(), &end);
+  return end != v.c_str() && *end == '\0';
+}
+
 double Options::GetDouble(const std::string& name) const
 {
   const std::string v = Get(name);
@@ -148,7 +161,9 @@ double Options::GetDouble(const std::string& name) const
   const double d = std::strtod(v.c_str(), &end);
   // strtod takes "nan", which no option means and which slips past range checks written as
   // comparisons (--azimuth nan crashed the voxel reference).
-  if (v.empty() || *end != '\0' || std::isnan(d))
+  // Hexadecimal ("0x10") is no number an option means either; infinities are left to the
+  // options' range checks, which name them.
+  if (v.empty() || *end != '\0' || std::isnan(d) || v.find_first_of("xX \t") != std::string::npos)
   {
     throw UsageError("option '--" + name + "' expects a number, got '" + v + "'");
   }
@@ -159,7 +174,7 @@ long long GetIntImpl(const std::string& name, const std::string& v)
 {
   char* end = nullptr;
   const long long n = std::strtoll(v.c_str(), &end, 10);
-  if (v.empty() || *end != '\0')
+  if (v.empty() || *end != '\0' || v.find_first_not_of("0123456789+-") != std::string::npos)
   {
     throw UsageError("option '--" + name + "' expects an integer, got '" + v + "'");
   }

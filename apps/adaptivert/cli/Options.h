@@ -15,6 +15,9 @@ struct UsageError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+/// A plain decimal number ("12", "0.5", "1e-3"); not hexadecimal, "inf", "nan" or blanks.
+bool IsDecimalNumber(const std::string& v);
+
 class Options
 {
 public:

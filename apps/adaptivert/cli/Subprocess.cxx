@@ -1,6 +1,8 @@
 #include "cli/Subprocess.h"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
+#include <csignal>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -23,6 +25,7 @@ SubprocessResult RunProgram(const std::vector<std::string>& argv, const std::str
   {
     return r;
   }
+  const pid_t parent = getpid();
   const pid_t pid = fork();
   if (pid < 0)
   {
@@ -32,6 +35,14 @@ SubprocessResult RunProgram(const std::vector<std::string>& argv, const std::str
   }
   if (pid == 0)
   {
+    // A killed batch takes its frame with it: the child is killed when its parent dies (a
+    // SIGKILL of `adaptivert batch` left its render running), and exits at once if that
+    // happened before this line.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent)
+    {
+      _exit(128 + SIGKILL);
+    }
     dup2(pipefd[1], STDOUT_FILENO);
     close(pipefd[0]);
     close(pipefd[1]);

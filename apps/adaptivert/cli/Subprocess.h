@@ -1,6 +1,7 @@
 // Subprocess: runs a program (no shell, so no quoting issues) and captures its stdout; its
 // stderr goes to a log file, or stays the caller's when the log path is empty. `batch` runs each
-// frame this way so one failing frame cannot take the batch down.
+// frame this way so one failing frame cannot take the batch down; a child dies with its parent
+// (PR_SET_PDEATHSIG), so a killed batch leaves no render running.
 #ifndef adaptivert_Subprocess_h
 #define adaptivert_Subprocess_h
 

@@ -6,6 +6,7 @@
 #include "Error.h"
 #include "ValueMagnitude.h"
 #include "cli/Json.h"
+#include "cli/LoadOptions.h"
 #include "VolumePlacement.h"
 
 #include <vtkCellData.h>
@@ -18,8 +19,10 @@
 #include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -211,6 +214,16 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
     }
     Out(text, "  bounds       %s\n", Bounds(img).c_str());
     Orientation(path, img, text, j);
+    if (auto* frame = vtkStringArray::SafeDownCast(img->GetFieldData()->GetAbstractArray("Frame")))
+    {
+      Out(text, "  frame        %s (--frame %s)\n", frame->GetValue(0).c_str(),
+        frame->GetValue(0) == "VTK reader" ? "vtk: as VTK's readers and ParaView place the voxels" : "patient: LPS patient coordinates");
+      j.Set("frame", frame->GetValue(0));
+    }
+    if (auto* m = vtkDoubleArray::SafeDownCast(img->GetFieldData()->GetArray("IndexToWorld")))
+    {
+      j.Set("index_to_world", std::vector<double>(m->GetPointer(0), m->GetPointer(0) + 16));
+    }
     Out(text, "  scalars      %s, %d component%s, %srange %s%s\n", s->GetDataTypeAsString(),
       s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "",
       s->GetNumberOfComponents() > 1 ? "magnitude " : "", Range(r[0], r[1], " .. ").c_str(),
@@ -237,10 +250,19 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
         j.Set("magnitude_problem", e.problem());
       }
     }
-    if (img->GetPointData()->GetNumberOfArrays() > 1)
+    Out(text, "  point data   %s%s\n", ArrayList(img->GetPointData()).c_str(),
+      img->GetPointData()->GetNumberOfArrays() > 1 ? " (--array picks one)" : "");
+    if (img->GetCellData()->GetNumberOfArrays() > 0)
     {
-      Out(text, "  point data   %s (--array picks one)\n", ArrayList(img->GetPointData()).c_str());
+      Out(text, "  cell data    %s\n", ArrayList(img->GetCellData()).c_str());
     }
+    std::vector<std::string> names;
+    for (int i = 0; i < img->GetPointData()->GetNumberOfArrays(); ++i)
+    {
+      const char* n = img->GetPointData()->GetArrayName(i);
+      names.push_back(n ? n : "");
+    }
+    j.Set("arrays", names).Set("scalars_name", s->GetName() ? s->GetName() : "");
     j.Set("dimensions", std::vector<double>{ double(d[0]), double(d[1]), double(d[2]) })
       .Set("spacing", std::vector<double>(sp, sp + 3))
       .Set("origin", std::vector<double>(o, o + 3))
@@ -250,26 +272,39 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
   }
   else if (auto* pd = vtkPolyData::SafeDownCast(obj))
   {
-    long long tris = 0, other = 0;
+    long long tris = 0, other = 0, stripTris = 0;
     vtkCellArray* polys = pd->GetPolys();
     for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
     {
       (polys->GetCellSize(c) == 3 ? tris : other)++;
     }
+    // A strip of n points holds n - 2 triangles (a .vtp of strips showed 0 triangles).
+    vtkCellArray* strips = pd->GetStrips();
+    for (vtkIdType c = 0; c < strips->GetNumberOfCells(); ++c)
+    {
+      stripTris += std::max<vtkIdType>(0, strips->GetCellSize(c) - 2);
+    }
     Out(text, "  points       %s\n", Grouped(pd->GetNumberOfPoints()).c_str());
     Out(text, "  polygons     %s (%s triangles, %s other)\n", Grouped(pd->GetNumberOfPolys()).c_str(),
       Grouped(tris).c_str(), Grouped(other).c_str());
-    if (pd->GetNumberOfStrips() || pd->GetNumberOfLines() || pd->GetNumberOfVerts())
+    if (pd->GetNumberOfStrips())
     {
-      Out(text, "  also         %s strips, %s lines, %s vertices\n", Grouped(pd->GetNumberOfStrips()).c_str(),
-        Grouped(pd->GetNumberOfLines()).c_str(), Grouped(pd->GetNumberOfVerts()).c_str());
+      Out(text, "  strips       %s (%s triangles)\n", Grouped(pd->GetNumberOfStrips()).c_str(), Grouped(stripTris).c_str());
+    }
+    Out(text, "  triangles    %s\n", Grouped(tris + stripTris).c_str());
+    if (pd->GetNumberOfLines() || pd->GetNumberOfVerts())
+    {
+      Out(text, "  also         %s lines, %s vertices\n", Grouped(pd->GetNumberOfLines()).c_str(),
+        Grouped(pd->GetNumberOfVerts()).c_str());
     }
     Out(text, "  bounds       %s\n", Bounds(pd).c_str());
     Out(text, "  point data   %s\n", ArrayList(pd->GetPointData()).c_str());
     Out(text, "  cell data    %s\n", ArrayList(pd->GetCellData()).c_str()); // face colours, labels
     j.Set("points", static_cast<long long>(pd->GetNumberOfPoints()))
       .Set("polygons", static_cast<long long>(pd->GetNumberOfPolys()))
-      .Set("triangles", tris)
+      .Set("triangles", tris + stripTris)
+      .Set("triangles_in_polygons", tris)
+      .Set("triangles_in_strips", stripTris)
       .Set("strips", static_cast<long long>(pd->GetNumberOfStrips()));
   }
   else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(obj))
@@ -298,7 +333,11 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
   return j;
 }
 
-void Declare(cli::Options&) {}
+void Declare(cli::Options& o)
+{
+  o.Add("array", 0, "NAME", "point array of a volume to describe as its scalars (default: the active scalars)");
+  cli::AddLoadOptions(o);
+}
 
 int Run(const cli::Options& o)
 {
@@ -306,6 +345,7 @@ int Run(const cli::Options& o)
   {
     throw cli::UsageError("needs at least one FILE");
   }
+  const art::LoadOptions load = cli::LoadOptionsFrom(o); // a usage error before any file
   std::vector<cli::Json> all;
   int failures = 0;
   for (const auto& path : o.Positional())
@@ -313,7 +353,7 @@ int Run(const cli::Options& o)
     try
     {
       art::DataKind kind;
-      auto obj = art::Load(path, &kind);
+      auto obj = art::Load(path, load, &kind);
       std::string text;
       all.push_back(Describe(path, obj, kind, text));
       if (!o.Flag("json"))

@@ -7,6 +7,7 @@
 #include "FullResolutionMesh.h"
 #include "Error.h"
 #include "cli/Json.h"
+#include "cli/LoadOptions.h"
 #include "MeshQuality.h"
 #include "Progress.h"
 #include "cli/ProgressBar.h"
@@ -19,6 +20,7 @@
 #include "TransferFunction.h"
 #endif
 
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -66,6 +68,7 @@ void Declare(cli::Options& o)
     "reduce for this transfer function's opacity (a preset, e.g. ct-skin-bone, or a file of "
     "'scalar r g b opacity' lines, or a ParaView preset .json): tets go where opacity changes, "
     "and a value fitted past its voxels into a more opaque range is clamped to theirs");
+  cli::AddLoadOptions(o);
 }
 
 // The output path, -o OUT as render takes it or OUT after the input ('reduce in.mha -o out.vtu'
@@ -206,8 +209,9 @@ std::vector<art::ReducedMesh> Reduce(
 
 // Writes each mesh (levels as OUT_<tets>.vtu, the last as OUT.vtu), once every one has passed its
 // conformity check: a failed check must not have replaced an existing OUT.vtu already.
+// `placement`: the volume's field data, whose IndexToWorld and Frame each mesh takes.
 std::vector<cli::Json> WriteMeshes(const std::vector<art::ReducedMesh>& meshes, const std::string& outPath,
-  const art::VoxelVolume& volume, const art::ReducerOptions& opt, bool json)
+  const art::VoxelVolume& volume, const art::ReducerOptions& opt, bool json, vtkFieldData* placement)
 {
   for (const auto& m : meshes)
   {
@@ -228,7 +232,16 @@ std::vector<cli::Json> WriteMeshes(const std::vector<art::ReducedMesh>& meshes, 
     const std::string file = last ? outPath
                                   : (op.parent_path() / (op.stem().string() + "_" +
                                         std::to_string(m.TargetTets > 0 ? m.TargetTets : m.NumberOfTets()) + ".vtu")).string();
-    art::SaveMesh(art::ToUnstructuredGrid(m, volume.DoubleValues), file);
+    auto grid = art::ToUnstructuredGrid(m, volume.DoubleValues);
+    // The volume's placement goes with the mesh (its points are in that frame).
+    for (const char* name : { "IndexToWorld", "Frame" })
+    {
+      if (vtkAbstractArray* a = placement ? placement->GetAbstractArray(name) : nullptr)
+      {
+        grid->GetFieldData()->AddArray(a);
+      }
+    }
+    art::SaveMesh(grid, file);
     cli::Json j;
     j.Set("file", file).Set("tets", m.NumberOfTets()).Set("vertices", m.NumberOfVertices())
       .Set("target_tets", m.TargetTets).Set("rms_error", m.Rms).Set("max_error", m.Max)
@@ -304,7 +317,7 @@ int Run(const cli::Options& o)
   const auto [in, outPath] = InputAndOutput(o);
   art::ReducerOptions opt = OptionsBeforeLoading(o);
 
-  auto image = art::LoadVolume(in, o.Get("array"));
+  auto image = art::LoadVolume(in, cli::LoadOptionsFrom(o));
   art::RequireOneComponent(image, in);
   const art::VoxelVolume volume = art::VolumeFromImage(image, in);
   WeightByTransferFunction(o, volume, opt);
@@ -323,7 +336,8 @@ int Run(const cli::Options& o)
   {
     throw art::Error("the reduction produced no mesh", in);
   }
-  const std::vector<cli::Json> levels = WriteMeshes(meshes, outPath, volume, opt, o.Flag("json"));
+  const std::vector<cli::Json> levels =
+    WriteMeshes(meshes, outPath, volume, opt, o.Flag("json"), image->GetFieldData());
   // With --max-error the run may stop before a level's budget: say which files were not written.
   const std::vector<long long> missing = art::UnreachedLevels(opt.Levels, meshes);
   for (long long b : missing)

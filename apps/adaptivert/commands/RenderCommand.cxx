@@ -5,6 +5,7 @@
 #include "Error.h"
 #include "ImageIO.h"
 #include "rendering/Render.h"
+#include "cli/LoadOptions.h"
 
 #include <vtkCamera.h>
 
@@ -110,7 +111,7 @@ static bool VolumeOnly(const std::string& option)
 {
   static const std::set<std::string> only = { "tets", "max-error", "refinement", "relocate", "no-relocate", "plain-reduction",
     "mesh-cache", "reference", "save-mesh" };
-  return only.count(option) > 0;
+  return only.count(option) > 0 || (IsLoadOption(option) && option != "frame"); // --frame: also --error's volume
 }
 
 bool IsRenderOption(const std::string& option)
@@ -214,7 +215,7 @@ int Run(const cli::Options& o)
     cli::ParseDirection(o.Get("view-up"), "--view-up");
   }
   cli::ViewFromOptions(o);
-  const art::DataKind kind = art::KindOf(input);
+  const art::DataKind kind = art::KindOf(input, cli::LoadOptionsFrom(o));
   {
     // An output that cannot be written (a folder that does not exist or is read-only, a folder's
     // name) is said before loading and reducing: it was said at the end, after a minute of

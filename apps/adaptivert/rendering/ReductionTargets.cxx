@@ -15,7 +15,7 @@ long long ParseBudget(const std::string& s, long long voxels, const std::string&
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
   const bool pct = end && *end == '%' && end[1] == 0;
-  if (s.empty() || !end || end == s.c_str() || (*end && !pct) || !(v > 0) || !std::isfinite(v))
+  if (!IsDecimalNumber(pct ? s.substr(0, s.size() - 1) : s) || !end || end == s.c_str() || (*end && !pct) || !(v > 0) || !std::isfinite(v))
   {
     throw UsageError(what + " wants a positive number or a percentage, got '" + s + "'");
   }
@@ -33,7 +33,7 @@ double ParseMaxError(const std::string& s, bool& relative)
   relative = !s.empty() && s.back() == '%';
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || end == s.c_str() || (end && *end && !(relative && end[1] == 0 && *end == '%')) || !(v >= 0) ||
+  if (!IsDecimalNumber(relative ? s.substr(0, s.size() - 1) : s) || end == s.c_str() || (end && *end && !(relative && end[1] == 0 && *end == '%')) || !(v >= 0) ||
     !std::isfinite(v))
   {
     throw UsageError("--max-error wants a number or a percentage, got '" + s + "'");

@@ -9,6 +9,7 @@
 #include "ImageIO.h"
 #include "ImageMetrics.h"
 #include "cli/Json.h"
+#include "cli/LoadOptions.h"
 #include "rendering/MeshCache.h"
 #include "ParallelTiles.h"
 #include "cli/ProgressBar.h"
@@ -96,6 +97,29 @@ void Declare(cli::Options& o)
     "the error figures against REF: an image file, a volume (its voxel reference, same view and transfer "
     "function), or 'exact' (this mesh with the exact rule and no early termination); a volume's default is "
     "its own voxel reference, a mesh has none");
+  cli::AddLoadOptions(o);
+}
+
+// Options that contradict each other were taken without a word (--relocate --no-relocate
+// relocated; --reference --tets 500 rendered the reference and reduced nothing).
+void RefuseContradictions(const cli::Options& o)
+{
+  if (o.Flag("relocate") && o.Flag("no-relocate"))
+  {
+    throw cli::UsageError("--relocate and --no-relocate contradict each other: give one");
+  }
+  if (o.Flag("reference"))
+  {
+    for (const char* reducing :
+      { "tets", "max-error", "refinement", "relocate", "no-relocate", "plain-reduction", "mesh-cache", "save-mesh" })
+    {
+      if (o.Has(reducing))
+      {
+        throw cli::UsageError(std::string("--reference renders the full-resolution voxels; --") + reducing +
+          " (which reduces them first) does not apply to it");
+      }
+    }
+  }
 }
 
 // A preset's opacities are per unit distance: 1 mm on CT in HU of mm voxels, else the data's sample spacing;
@@ -354,7 +378,7 @@ void CheckSaveMesh(const cli::Options& o)
 // (MakeVolumeTets), so a view that cannot be set up is said before a long reduction.
 void LoadVolumeScene(const cli::Options& o, const std::string& input, Scene& sc)
 {
-  sc.volume = art::LoadVolume(input, o.Get("array")); // it has scalars
+  sc.volume = art::LoadVolume(input, cli::LoadOptionsFrom(o)); // it has scalars
   art::RequireOneComponent(sc.volume, input);
   sc.volume->GetPointData()->GetScalars()->GetRange(sc.range);
   if (!std::isfinite(sc.range[0]) || !std::isfinite(sc.range[1]))
@@ -475,7 +499,10 @@ Frame CastWithReference(const cli::Options& o, const std::string& input, const S
   }
   else if (ref != "none")
   {
-    auto volume = art::LoadVolume(ref, o.Get("array"));
+    art::LoadOptions placed; // the reference volume in the frame the mesh was reduced in
+    placed.Array = o.Get("array");
+    placed.Placement = cli::LoadOptionsFrom(o).Placement;
+    auto volume = art::LoadVolume(ref, placed);
     art::RequireOneComponent(volume, ref);
     f.rst = art::VoxelReferenceCaster::FromVTK(volume, sc.settings, ref).Render(cam, f.ref, &progress);
     f.refLabel = "voxel ray caster on " + ref;
@@ -584,6 +611,7 @@ void PrintText(const cli::Options& o, const std::string& input, const cli::View&
 int Run(const cli::Options& o, const std::string& input)
 {
   const cli::View view = cli::ViewFromOptions(o);
+  RefuseContradictions(o);
   cli::ProgressBar bar(o.Flag("quiet"));
   art::Progress progress(bar.Callback());
   cli::Json j;
@@ -602,7 +630,7 @@ int Run(const cli::Options& o, const std::string& input)
   Scene sc;
   const auto t0 = std::chrono::steady_clock::now();
   art::Box3 bounds;
-  if (art::KindOf(input) == art::DataKind::Volume)
+  if (art::KindOf(input, cli::LoadOptionsFrom(o)) == art::DataKind::Volume)
   {
     LoadVolumeScene(o, input, sc);
     double b[6];

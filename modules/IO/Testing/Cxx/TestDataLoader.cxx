@@ -167,8 +167,8 @@ TEST(DataLoader, ByteOrderMarks)
   ExpectError(dir + "bom.stl", "starts with a UTF-8 byte-order mark");
 }
 
-// A folder of 2-D slices (a micro-CT's TIFF stack) says what it holds and how to make a volume of
-// it; it said only "folder holds no readable DICOM series".
+// A folder of 2-D slices (a micro-CT's TIFF stack) is read as a stack; one whose slices are not
+// images names the slice at fault.
 TEST(DataLoader, ImageStackFolderIsNamed)
 {
   const std::string dir = std::string(ART_TEST_OUTPUT) + "/tif-stack";
@@ -177,9 +177,9 @@ TEST(DataLoader, ImageStackFolderIsNamed)
   {
     std::ofstream(dir + name) << "II*";
   }
-  ExpectError(dir, "folder holds no readable DICOM series but 2 TIF images: a stack of slices is not read as a volume");
-  // One of them, or a multi-page TIFF (ImageJ's volumes): it was an "unknown file type '.tif'".
-  ExpectError(dir + "/s0001.tif", "is a 2-D image or an image stack, not read as a volume (its spacing is unknown)");
+  // A folder of slices is read as a stack (OtherFormats); these three bytes are no TIFF.
+  ExpectError(dir, "s0001.tif: is not a readable tif image");
+  ExpectError(dir + "/s0001.tif", "is not a TIFF file VTK reads");
 }
 
 TEST(DataLoader, ObjFaceIndicesAreChecked)
