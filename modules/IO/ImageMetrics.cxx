@@ -24,7 +24,7 @@ void CheckSameSize(const Image& a, const Image& b)
 }
 
 // Alpha is left out when it is 1 in both images (written images are composited over a
-// background): a channel with no error would only dilute the others' (+1.25 dB of PSNR).
+// background): a channel with no error would only dilute the others'.
 int Channels(const Image& a, const Image& b)
 {
   const auto& pa = a.Pixels();

@@ -366,13 +366,16 @@ vtkSmartPointer<vtkDataArray> Attribute(int field, const char* name)
 }
 } // namespace
 
-vtkSmartPointer<vtkPolyData> ReadObj(const std::string& path)
+namespace
 {
-  const Obj obj = Parse(path);
-  // An attribute is kept only when every face corner has one: a normal for some corners only
-  // would leave the others' points without one.
-  bool keep[3] = { true, obj.Count[T] > 0, obj.Count[N] > 0 };
-  bool sameAsVertex = true; // every kept index equals the vertex index: no point need be split
+// An attribute is kept only when every face corner has one: a normal for some corners only would
+// leave the others' points without one. `sameAsVertex`: every kept index equals the vertex index,
+// so no point need be split.
+void ChooseAttributes(const Obj& obj, bool keep[3], bool& sameAsVertex)
+{
+  keep[V] = true;
+  keep[T] = obj.Count[T] > 0;
+  keep[N] = obj.Count[N] > 0;
   for (const Cell& cell : obj.Cells)
   {
     for (std::size_t i = cell.first; cell.kind == 'f' && i < cell.first + cell.count; ++i)
@@ -381,40 +384,38 @@ vtkSmartPointer<vtkPolyData> ReadObj(const std::string& path)
       keep[N] = keep[N] && obj.Corners[i][N] >= 0;
     }
   }
+  sameAsVertex = true;
   for (const Corner& c : obj.Corners)
   {
     sameAsVertex = sameAsVertex && (!keep[T] || c[T] < 0 || c[T] == c[V]) && (!keep[N] || c[N] < 0 || c[N] == c[V]);
   }
+}
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble(); // survey and CAD coordinates need more than a float's 7 digits
-  vtkSmartPointer<vtkDataArray> attr[3] = { nullptr, keep[T] ? Attribute(T, "TCoords") : nullptr,
-    keep[N] ? Attribute(N, "Normals") : nullptr };
-  std::vector<vtkIdType> ids(obj.Corners.size());
-  // Vertex colours when every vertex has one, as 8-bit RGB scalars (0..1 values scaled by 255).
-  vtkSmartPointer<vtkUnsignedCharArray> rgb;
-  double colorScale = 255.0;
-  if (obj.Count[V] > 0 && obj.Colored == obj.Count[V])
+// The points of the surface with their attributes, and each corner's point.
+struct PointSet
+{
+  vtkNew<vtkPoints> Points;
+  vtkSmartPointer<vtkDataArray> Attr[3];
+  vtkSmartPointer<vtkUnsignedCharArray> Rgb; ///< vertex colours, when every vertex has one
+  double ColorScale = 255.0;                 ///< 0..1 colours are scaled to 8 bits
+  std::vector<vtkIdType> Ids;                ///< per corner
+
+  vtkIdType Add(const Obj& obj, const Corner& c)
   {
-    rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    rgb->SetName("RGB");
-    rgb->SetNumberOfComponents(3);
-    colorScale = *std::max_element(obj.Colors.begin(), obj.Colors.end()) > 1.0 ? 1.0 : 255.0;
-  }
-  auto addPoint = [&](const Corner& c) {
-    const vtkIdType id = points->InsertNextPoint(&obj.Coords[V][3 * std::size_t(c[V])]);
-    if (rgb)
+    const vtkIdType id = Points->InsertNextPoint(&obj.Coords[V][3 * std::size_t(c[V])]);
+    if (Rgb)
     {
       unsigned char value[3];
       for (int k = 0; k < 3; ++k)
       {
-        value[k] = static_cast<unsigned char>(std::clamp(obj.Colors[3 * std::size_t(c[V]) + k] * colorScale + 0.5, 0.0, 255.0));
+        value[k] =
+          static_cast<unsigned char>(std::clamp(obj.Colors[3 * std::size_t(c[V]) + k] * ColorScale + 0.5, 0.0, 255.0));
       }
-      rgb->InsertNextTypedTuple(value);
+      Rgb->InsertNextTypedTuple(value);
     }
     for (int f : { T, N })
     {
-      if (attr[f])
+      if (Attr[f])
       {
         const int nc = f == T ? 2 : 3;
         double value[3] = { 0, 0, 0 };
@@ -422,97 +423,123 @@ vtkSmartPointer<vtkPolyData> ReadObj(const std::string& path)
         {
           value[k] = obj.Coords[f][nc * std::size_t(c[f]) + k];
         }
-        attr[f]->InsertNextTuple(value);
+        Attr[f]->InsertNextTuple(value);
       }
     }
     return id;
-  };
+  }
+};
+
+void BuildPoints(const Obj& obj, PointSet& ps)
+{
+  bool keep[3], sameAsVertex;
+  ChooseAttributes(obj, keep, sameAsVertex);
+  ps.Points->SetDataTypeToDouble(); // survey and CAD coordinates need more than a float's 7 digits
+  ps.Attr[T] = keep[T] ? Attribute(T, "TCoords") : nullptr;
+  ps.Attr[N] = keep[N] ? Attribute(N, "Normals") : nullptr;
+  ps.Ids.resize(obj.Corners.size());
+  if (obj.Count[V] > 0 && obj.Colored == obj.Count[V])
+  {
+    ps.Rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    ps.Rgb->SetName("RGB");
+    ps.Rgb->SetNumberOfComponents(3);
+    ps.ColorScale = *std::max_element(obj.Colors.begin(), obj.Colors.end()) > 1.0 ? 1.0 : 255.0;
+  }
   if (sameAsVertex)
   {
     // Every vertex is a point, in file order, with the attribute of the same index (if any).
     for (std::size_t v = 0; v < obj.Count[V]; ++v)
     {
       const auto i = static_cast<std::int32_t>(v);
-      addPoint({ i, keep[T] && v < obj.Count[T] ? i : -1, keep[N] && v < obj.Count[N] ? i : -1 });
+      ps.Add(obj, { i, keep[T] && v < obj.Count[T] ? i : -1, keep[N] && v < obj.Count[N] ? i : -1 });
     }
     for (std::size_t i = 0; i < obj.Corners.size(); ++i)
     {
-      ids[i] = obj.Corners[i][V];
+      ps.Ids[i] = obj.Corners[i][V];
     }
+    return;
   }
-  else
+  // One point per distinct (vertex, kept attributes) triple, in order of first use.
+  std::unordered_map<Corner, vtkIdType, CornerHash> index;
+  index.reserve(obj.Count[V]);
+  for (std::size_t i = 0; i < obj.Corners.size(); ++i)
   {
-    // One point per distinct (vertex, kept attributes) triple, in order of first use.
-    std::unordered_map<Corner, vtkIdType, CornerHash> index;
-    index.reserve(obj.Count[V]);
-    for (std::size_t i = 0; i < obj.Corners.size(); ++i)
+    Corner c = obj.Corners[i];
+    c[T] = keep[T] ? c[T] : -1;
+    c[N] = keep[N] ? c[N] : -1;
+    auto [it, added] = index.try_emplace(c, 0);
+    if (added)
     {
-      Corner c = obj.Corners[i];
-      c[T] = keep[T] ? c[T] : -1;
-      c[N] = keep[N] ? c[N] : -1;
-      auto [it, added] = index.try_emplace(c, 0);
-      if (added)
-      {
-        it->second = addPoint(c);
-      }
-      ids[i] = it->second;
+      it->second = ps.Add(obj, c);
+    }
+    ps.Ids[i] = it->second;
+  }
+}
+
+// Material colours on the cells (in vtkPolyData's order: verts, lines, polys) when every face has
+// a material with a diffuse colour, as vertex colours are kept only when every vertex has one.
+vtkSmartPointer<vtkUnsignedCharArray> FaceColours(const Obj& obj, vtkIdType faces, const std::string& path)
+{
+  if (obj.Materials.empty() || faces == 0)
+  {
+    return nullptr;
+  }
+  const auto kd = DiffuseColours(obj, path);
+  for (const Cell& cell : obj.Cells)
+  {
+    if (cell.kind == 'f' && !(cell.material >= 0 && kd[cell.material][0] >= 0))
+    {
+      return nullptr;
     }
   }
+  auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  rgb->SetName("RGB");
+  rgb->SetNumberOfComponents(3);
+  for (char kind : { 'p', 'l', 'f' })
+  {
+    for (const Cell& cell : obj.Cells)
+    {
+      if (cell.kind == kind)
+      {
+        const std::array<double, 3> c =
+          cell.material >= 0 && kd[cell.material][0] >= 0 ? kd[cell.material] : std::array<double, 3>{ 0, 0, 0 };
+        rgb->InsertNextTuple3(std::round(255 * c[0]), std::round(255 * c[1]), std::round(255 * c[2]));
+      }
+    }
+  }
+  return rgb;
+}
+} // namespace
 
+vtkSmartPointer<vtkPolyData> ReadObj(const std::string& path)
+{
+  const Obj obj = Parse(path);
+  PointSet ps;
+  BuildPoints(obj, ps);
   vtkNew<vtkCellArray> cells[3]; // verts, lines, polys
   for (const Cell& cell : obj.Cells)
   {
     vtkCellArray* ca = cells[cell.kind == 'p' ? 0 : cell.kind == 'l' ? 1 : 2];
-    ca->InsertNextCell(static_cast<vtkIdType>(cell.count), &ids[cell.first]);
-  }
-  // Material colours on the cells (in vtkPolyData's order: verts, lines, polys) when every face
-  // has a material with a diffuse colour, as vertex colours are kept only when every vertex has one.
-  vtkSmartPointer<vtkUnsignedCharArray> faceRgb;
-  if (!obj.Materials.empty() && cells[2]->GetNumberOfCells() > 0)
-  {
-    const auto kd = DiffuseColours(obj, path);
-    bool all = true;
-    for (const Cell& cell : obj.Cells)
-    {
-      all = all && (cell.kind != 'f' || (cell.material >= 0 && kd[cell.material][0] >= 0));
-    }
-    if (all)
-    {
-      faceRgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
-      faceRgb->SetName("RGB");
-      faceRgb->SetNumberOfComponents(3);
-      for (char kind : { 'p', 'l', 'f' })
-      {
-        for (const Cell& cell : obj.Cells)
-        {
-          if (cell.kind == kind)
-          {
-            const std::array<double, 3> c = cell.material >= 0 && kd[cell.material][0] >= 0
-              ? kd[cell.material] : std::array<double, 3>{ 0, 0, 0 };
-            faceRgb->InsertNextTuple3(std::round(255 * c[0]), std::round(255 * c[1]), std::round(255 * c[2]));
-          }
-        }
-      }
-    }
+    ca->InsertNextCell(static_cast<vtkIdType>(cell.count), &ps.Ids[cell.first]);
   }
   auto pd = vtkSmartPointer<vtkPolyData>::New();
-  pd->SetPoints(points);
+  pd->SetPoints(ps.Points);
   pd->SetVerts(cells[0]);
   pd->SetLines(cells[1]);
   pd->SetPolys(cells[2]);
-  if (attr[T])
+  if (ps.Attr[T])
   {
-    pd->GetPointData()->SetTCoords(attr[T]);
+    pd->GetPointData()->SetTCoords(ps.Attr[T]);
   }
-  if (attr[N])
+  if (ps.Attr[N])
   {
-    pd->GetPointData()->SetNormals(attr[N]);
+    pd->GetPointData()->SetNormals(ps.Attr[N]);
   }
-  if (rgb)
+  if (ps.Rgb)
   {
-    pd->GetPointData()->SetScalars(rgb);
+    pd->GetPointData()->SetScalars(ps.Rgb);
   }
-  if (faceRgb)
+  if (auto faceRgb = FaceColours(obj, cells[2]->GetNumberOfCells(), path))
   {
     pd->GetCellData()->SetScalars(faceRgb);
   }

@@ -1,6 +1,6 @@
 // OiioImageIO: the OpenImageIO side of ImageIO (EXR, TIFF and every format OpenImageIO reads), in
-// a plug-in loaded on first use. OpenImageIO pulls in some 260 libraries, which cost every program
-// linking it about half a second at start-up; PNG, which nearly every run writes, goes through VTK.
+// a plug-in loaded on first use. OpenImageIO pulls in hundreds of libraries, which would slow the
+// start of every program linking IO; PNG, which nearly every run writes, goes through VTK.
 #ifndef art_OiioImageIO_h
 #define art_OiioImageIO_h
 

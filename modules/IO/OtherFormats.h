@@ -4,7 +4,7 @@
 // (a folder or a printf pattern), raw voxels (vtkImageReader, as ParaView's raw reader), Exodus II
 // (.exo .e .ex2), AVS UCD (.inp), Tecplot ASCII (.tec .dat), GAMBIT (.neu), BYU (.g .byu) and
 // facets (.facet). The netCDF-based readers (MINC, Exodus) live in a plug-in loaded on first use:
-// their 40 libraries would slow the start of every program linking IO.
+// their libraries (netCDF, HDF5, curl and more) would slow the start of every program linking IO.
 #ifndef art_OtherFormats_h
 #define art_OtherFormats_h
 

@@ -125,201 +125,262 @@ private:
   size_t Pos = 0, End = 0;
 };
 
-// Reads every element of the body as vtkPLYReader will (ASCII: one instance per line) and checks
-// that nothing is missing and that faces name vertices that exist: VTK 9.1 crashes on a short
-// ASCII line and on a face index past the vertex count.
+// Where a vertex element keeps double x, y, z and floating-point red, green, blue: vtkPLYReader
+// stores floats, which lose survey coordinates (a 1 m triangle 2.5e7 m out collapsed to a point),
+// and casts float colours to 8 bits (1.0 became 1/255). Channel a (0..5: x y z r g b) of property
+// k is Axis[k]; At and Types give its byte offset in a fixed-size row and its type.
+struct KeptChannels
+{
+  int Axis[16];
+  std::size_t At[6] = { 0, 0, 0, 0, 0, 0 };
+  Type Types[6];
+  std::size_t Row = 0; ///< bytes per instance when no property is a list, else size_t(-1)
+  bool Xyz = false, Rgb = false;
+  bool Keeps(int a) const { return a >= 0 && (a < 3 ? Xyz : Rgb); }
+};
+
+KeptChannels FindKeptChannels(const Element& e, bool wantXyz, bool wantRgb)
+{
+  KeptChannels k;
+  std::fill(k.Axis, k.Axis + 16, -1);
+  const std::size_t variable = static_cast<std::size_t>(-1);
+  int found = 0; // bit a: channel a is there in a type worth keeping
+  for (std::size_t i = 0; i < e.props.size(); ++i)
+  {
+    const Property& p = e.props[i];
+    const bool isDouble = p.type == "double" || p.type == "float64";
+    int a = -1;
+    if (e.name == "vertex" && p.countType.empty() && i < 16)
+    {
+      a = (wantXyz && isDouble) ? (p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1) : -1;
+      if (a < 0 && wantRgb && p.item.isFloat)
+      {
+        a = p.name == "red" ? 3 : p.name == "green" ? 4 : p.name == "blue" ? 5 : -1;
+      }
+    }
+    if (a >= 0 && k.Row != variable)
+    {
+      k.Axis[i] = a;
+      k.At[a] = k.Row;
+      k.Types[a] = p.item;
+      found |= 1 << a;
+    }
+    k.Row = (k.Row == variable || !p.countType.empty()) ? variable : k.Row + p.item.size;
+  }
+  k.Xyz = (found & 7) == 7;
+  k.Rgb = (found & 56) == 56;
+  return k;
+}
+
+// The kept channels' values, three per instance, into xyz (a < 3) or rgb.
+struct Store
+{
+  std::vector<double>* Xyz;
+  std::vector<double>* Rgb;
+  void operator()(long long i, int a, double v) const
+  {
+    (a < 3 ? *Xyz : *Rgb)[3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(a % 3)] = v;
+  }
+};
+
+// Binary instances of a fixed size: each must be there.
+void ReadFixedRows(Bytes& bytes, const Element& e, const KeptChannels& k, bool bigEndian, const Store& store,
+  const std::string& path)
+{
+  for (long long i = 0; i < e.count; ++i)
+  {
+    const unsigned char* r = k.Row ? bytes.Get(k.Row) : nullptr;
+    if (k.Row && !r)
+    {
+      throw Error("truncated: " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) + " is missing",
+        path);
+    }
+    for (int a = 0; a < 6; ++a)
+    {
+      if (k.Keeps(a))
+      {
+        store(i, a, Decode(r + k.At[a], k.Types[a], bigEndian));
+      }
+    }
+  }
+}
+
+// The values of one instance in turn: binary from `bytes`, ASCII from one line of text.
+class ValueCursor
+{
+public:
+  ValueCursor(Bytes& bytes, bool binary, bool bigEndian)
+    : Source(bytes)
+    , Binary(binary)
+    , BigEndian(bigEndian)
+  {
+  }
+  void SetLine(const char* line) { Cursor = line; }
+  // The next value; only counts, indices and kept channels are parsed as numbers.
+  bool Next(const Type& type, bool parse, double& v)
+  {
+    if (Binary)
+    {
+      const unsigned char* p = Source.Get(static_cast<size_t>(type.size));
+      if (p && parse)
+      {
+        v = Decode(p, type, BigEndian);
+      }
+      return p != nullptr;
+    }
+    while (*Cursor == ' ' || *Cursor == '\t' || *Cursor == '\r')
+    {
+      ++Cursor;
+    }
+    if (!*Cursor)
+    {
+      return false;
+    }
+    const char* start = Cursor;
+    while (*Cursor && *Cursor != ' ' && *Cursor != '\t' && *Cursor != '\r')
+    {
+      ++Cursor;
+    }
+    if (parse)
+    {
+      char* end = nullptr;
+      v = std::strtod(start, &end);
+      return end == Cursor;
+    }
+    return true;
+  }
+
+private:
+  Bytes& Source;
+  bool Binary, BigEndian;
+  const char* Cursor = "";
+};
+
+// One list property of instance i: its count, then that many items; a face's vertex indices
+// must name vertices that exist (VTK 9.1 crashed on one past the vertex count).
+void ReadList(ValueCursor& values, const Element& e, const Property& p, long long i, long long vertices,
+  const std::string& path)
+{
+  double v = 0;
+  if (!values.Next(p.count, true, v) || !(v >= 0 && v <= 1e6))
+  {
+    throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " has no valid '" + p.name + "' count",
+      path);
+  }
+  const long long n = static_cast<long long>(v);
+  const bool indices = e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index");
+  for (long long k = 0; k < n; ++k)
+  {
+    if (!values.Next(p.item, indices, v))
+    {
+      throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " lists " + std::to_string(n) +
+          " '" + p.name + "' but fewer are there",
+        path);
+    }
+    if (indices && vertices >= 0 && !(v >= 0 && v < static_cast<double>(vertices)))
+    {
+      throw Error("face " + std::to_string(i) + " refers to vertex " + std::to_string(static_cast<long long>(v)) +
+          " of " + std::to_string(vertices),
+        path);
+    }
+  }
+}
+
+// Instances read value by value: ASCII (one instance per line; VTK 9.1 crashed on a short line)
+// or binary with lists.
+void ReadRows(std::istream& in, ValueCursor& values, const Element& e, const KeptChannels& k, bool binary,
+  long long vertices, const Store& store, const std::string& path)
+{
+  std::string line;
+  for (long long i = 0; i < e.count; ++i)
+  {
+    if (!binary)
+    {
+      if (!std::getline(in, line))
+      {
+        throw Error("truncated: " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) + " is missing",
+          path);
+      }
+      values.SetLine(line.c_str());
+    }
+    for (size_t j = 0; j < e.props.size(); ++j)
+    {
+      const Property& p = e.props[j];
+      if (!p.countType.empty())
+      {
+        ReadList(values, e, p, i, vertices, path);
+        continue;
+      }
+      const int a = j < 16 && k.Keeps(k.Axis[j]) ? k.Axis[j] : -1;
+      double v = 0;
+      if (!values.Next(p.item, a >= 0, v))
+      {
+        throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " lacks '" + p.name + "'", path);
+      }
+      if (a >= 0)
+      {
+        store(i, a, v);
+      }
+    }
+  }
+}
+
+// Reads every element of the body as vtkPLYReader will and checks that nothing is missing and
+// that faces name vertices that exist.
 void CheckBody(std::istream& in, const std::vector<Element>& elements, bool binary, bool bigEndian,
   const std::string& path, std::vector<double>* xyz, std::vector<double>* rgb)
 {
   long long vertices = -1;
   for (const Element& e : elements)
   {
-    if (e.name == "vertex")
-    {
-      vertices = e.count;
-    }
+    vertices = e.name == "vertex" ? e.count : vertices;
   }
   Bytes bytes(in);
-  std::string line;
+  ValueCursor values(bytes, binary, bigEndian);
+  const Store store{ xyz, rgb };
   for (const Element& e : elements)
   {
-    const bool isFace = e.name == "face";
-    size_t row = 0; // bytes per instance when no property is a list
-    // Double x, y, z of the vertices are kept: vtkPLYReader stores floats, which lose survey
-    // coordinates (a 1 m triangle 2.5e7 m out collapsed to a point). Floating-point red, green,
-    // blue (channels 3..5) are kept too: vtkPLYReader casts them to 8 bits, so 1.0 became 1/255.
-    int axis[16];
-    std::fill(axis, axis + 16, -1);
-    size_t at[6] = { 0, 0, 0, 0, 0, 0 };
-    Type type[6];
-    int found = 0; // bit a: channel a is there in a type worth keeping
-    for (size_t k = 0; k < e.props.size(); ++k)
-    {
-      const Property& p = e.props[k];
-      const bool isDouble = p.type == "double" || p.type == "float64";
-      int a = -1;
-      if (e.name == "vertex" && p.countType.empty() && k < 16)
-      {
-        a = (xyz && isDouble) ? (p.name == "x" ? 0 : p.name == "y" ? 1 : p.name == "z" ? 2 : -1) : -1;
-        if (a < 0 && rgb && p.item.isFloat)
-        {
-          a = p.name == "red" ? 3 : p.name == "green" ? 4 : p.name == "blue" ? 5 : -1;
-        }
-      }
-      if (a >= 0 && row != static_cast<size_t>(-1))
-      {
-        axis[k] = a;
-        at[a] = row;
-        type[a] = p.item;
-        found |= 1 << a;
-      }
-      row = (row == static_cast<size_t>(-1) || !p.countType.empty()) ? static_cast<size_t>(-1) : row + p.item.size;
-    }
-    const bool keep = (found & 7) == 7, keepRgb = (found & 56) == 56;
-    if (keep)
+    const KeptChannels k = FindKeptChannels(e, xyz != nullptr, rgb != nullptr);
+    if (k.Xyz)
     {
       xyz->assign(3 * static_cast<size_t>(e.count), 0.0);
     }
-    if (keepRgb)
+    if (k.Rgb)
     {
       rgb->assign(3 * static_cast<size_t>(e.count), 0.0);
     }
-    auto store = [&](long long i, int a, double v) {
-      (a < 3 ? *xyz : *rgb)[3 * static_cast<size_t>(i) + static_cast<size_t>(a % 3)] = v;
-    };
-    if (binary && row != static_cast<size_t>(-1))
+    if (binary && k.Row != static_cast<size_t>(-1))
     {
-      for (long long i = 0; i < e.count; ++i)
-      {
-        const unsigned char* r = row ? bytes.Get(row) : nullptr;
-        if (row && !r)
-        {
-          throw Error("truncated: " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) +
-              " is missing",
-            path);
-        }
-        for (int a = 0; a < 6; ++a)
-        {
-          if (a < 3 ? keep : keepRgb)
-          {
-            store(i, a, Decode(r + at[a], type[a], bigEndian));
-          }
-        }
-      }
-      continue;
+      ReadFixedRows(bytes, e, k, bigEndian, store, path);
     }
-    for (long long i = 0; i < e.count; ++i)
+    else
     {
-      const char* cursor = nullptr;
-      if (!binary)
-      {
-        if (!std::getline(in, line))
-        {
-          throw Error("truncated: " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) +
-              " is missing",
-            path);
-        }
-        cursor = line.c_str();
-      }
-      // The next value; only counts and indices are parsed as numbers.
-      auto next = [&](const Type& type, bool parse, double& v) {
-        if (binary)
-        {
-          const unsigned char* p = bytes.Get(static_cast<size_t>(type.size));
-          if (p && parse)
-          {
-            v = Decode(p, type, bigEndian);
-          }
-          return p != nullptr;
-        }
-        while (*cursor == ' ' || *cursor == '\t' || *cursor == '\r')
-        {
-          ++cursor;
-        }
-        if (!*cursor)
-        {
-          return false;
-        }
-        const char* start = cursor;
-        while (*cursor && *cursor != ' ' && *cursor != '\t' && *cursor != '\r')
-        {
-          ++cursor;
-        }
-        if (parse)
-        {
-          char* end = nullptr;
-          v = std::strtod(start, &end);
-          return end == cursor;
-        }
-        return true;
-      };
-      for (size_t k = 0; k < e.props.size(); ++k)
-      {
-        const Property& p = e.props[k];
-        double v = 0;
-        if (p.countType.empty())
-        {
-          const int a = k < 16 && axis[k] >= 0 && (axis[k] < 3 ? keep : keepRgb) ? axis[k] : -1;
-          if (!next(p.item, a >= 0, v))
-          {
-            throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " lacks '" + p.name + "'", path);
-          }
-          if (a >= 0)
-          {
-            store(i, a, v);
-          }
-          continue;
-        }
-        if (!next(p.count, true, v) || !(v >= 0 && v <= 1e6))
-        {
-          throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " has no valid '" + p.name +
-              "' count",
-            path);
-        }
-        const long long n = static_cast<long long>(v);
-        const bool indices = isFace && (p.name == "vertex_indices" || p.name == "vertex_index");
-        for (long long k = 0; k < n; ++k)
-        {
-          if (!next(p.item, indices, v))
-          {
-            throw Error("truncated or malformed: " + e.name + " " + std::to_string(i) + " lists " + std::to_string(n) +
-                " '" + p.name + "' but fewer are there",
-              path);
-          }
-          if (indices && vertices >= 0 && !(v >= 0 && v < static_cast<double>(vertices)))
-          {
-            throw Error("face " + std::to_string(i) + " refers to vertex " + std::to_string(static_cast<long long>(v)) +
-                " of " + std::to_string(vertices),
-              path);
-          }
-        }
-      }
+      ReadRows(in, values, e, k, binary, vertices, store, path);
     }
   }
 }
 } // namespace
 
-void CheckPly(const std::string& path, std::vector<double>* xyz, std::vector<double>* rgb)
+namespace
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-  {
-    throw Error("cannot open file", path);
-  }
-  std::string line;
-  if (std::getline(in, line) && line.rfind("\xEF\xBB\xBFply", 0) == 0)
-  {
-    throw Error("starts with a UTF-8 byte-order mark before 'ply', which VTK's PLY reader does not take: "
-                "save it without one",
-      path);
-  }
-  if (!in || line.rfind("ply", 0) != 0)
-  {
-    throw Error("not a PLY file (no 'ply' magic line)", path);
-  }
-  bool binary = false, bigEndian = false, haveFormat = false, ended = false;
+struct PlyHeader
+{
+  bool binary = false, bigEndian = false;
   std::vector<Element> layout;
-  long long minBody = 0, elements = 0, curCount = 0;
+  long long minBody = 0; ///< the fewest body bytes the elements take (each list at least its count)
+};
+
+// The header's lines after "ply" up to end_header: format, elements and their properties.
+PlyHeader ReadPlyHeader(std::istream& in, const std::string& path)
+{
+  PlyHeader h;
+  std::string line;
+  bool haveFormat = false, ended = false;
+  long long elements = 0, curCount = 0;
+  bool& binary = h.binary;
+  bool& bigEndian = h.bigEndian;
+  std::vector<Element>& layout = h.layout;
+  long long& minBody = h.minBody;
   for (int n = 0; n < 10000 && std::getline(in, line); ++n)
   {
     if (!line.empty() && line.back() == '\r')
@@ -401,12 +462,35 @@ void CheckPly(const std::string& path, std::vector<double>* xyz, std::vector<dou
   {
     throw Error("incomplete PLY header (no format, element or end_header)", path);
   }
+  return h;
+}
+} // namespace
+
+void CheckPly(const std::string& path, std::vector<double>* xyz, std::vector<double>* rgb)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+  {
+    throw Error("cannot open file", path);
+  }
+  std::string line;
+  if (std::getline(in, line) && line.rfind("\xEF\xBB\xBFply", 0) == 0)
+  {
+    throw Error("starts with a UTF-8 byte-order mark before 'ply', which VTK's PLY reader does not take: "
+                "save it without one",
+      path);
+  }
+  if (!in || line.rfind("ply", 0) != 0)
+  {
+    throw Error("not a PLY file (no 'ply' magic line)", path);
+  }
+  const PlyHeader h = ReadPlyHeader(in, path);
   const long long bodyStart = static_cast<long long>(in.tellg());
   std::error_code ec;
   const long long size = static_cast<long long>(std::filesystem::file_size(path, ec));
-  if (binary && size - bodyStart < minBody)
+  if (h.binary && size - bodyStart < h.minBody)
   {
-    throw Error("truncated: header needs at least " + std::to_string(minBody) +
+    throw Error("truncated: header needs at least " + std::to_string(h.minBody) +
         " body bytes, file holds " + std::to_string(size - bodyStart),
       path);
   }
@@ -418,6 +502,6 @@ void CheckPly(const std::string& path, std::vector<double>* xyz, std::vector<dou
   {
     rgb->clear();
   }
-  CheckBody(in, layout, binary, bigEndian, path, xyz, rgb);
+  CheckBody(in, h.layout, h.binary, h.bigEndian, path, xyz, rgb);
 }
 } // namespace art

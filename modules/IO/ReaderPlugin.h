@@ -1,6 +1,6 @@
 // ReaderPlugin: readers built on netCDF (MINC, Exodus II) live in a plug-in, loaded on first use
-// from the folder of the IO library: their libraries (netCDF, HDF5, curl and some 40 more) would
-// otherwise load with every program that links IO.
+// from the folder of the IO library: their libraries (netCDF, HDF5, curl and more) would otherwise
+// load with every program that links IO.
 #ifndef art_ReaderPlugin_h
 #define art_ReaderPlugin_h
 

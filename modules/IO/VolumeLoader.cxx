@@ -246,7 +246,7 @@ void MakeSpacingPositive(vtkImageData* img, const std::string& path)
 
 namespace
 {
-// vtkNrrdReader itself: in a Python session that imported all of VTK, the object factory hands
+// vtkNrrdReader itself: in a Python program that imported all of VTK, the object factory hands
 // out vtkPNrrdReader, which refuses to read without an MPI controller.
 vtkSmartPointer<vtkAlgorithm> PlainNrrdReader(const std::string& path)
 {

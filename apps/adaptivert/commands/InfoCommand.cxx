@@ -214,16 +214,6 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
     }
     Out(text, "  bounds       %s\n", Bounds(img).c_str());
     Orientation(path, img, text, j);
-    if (auto* frame = vtkStringArray::SafeDownCast(img->GetFieldData()->GetAbstractArray("Frame")))
-    {
-      Out(text, "  frame        %s (--frame %s)\n", frame->GetValue(0).c_str(),
-        frame->GetValue(0) == "VTK reader" ? "vtk: as VTK's readers and ParaView place the voxels" : "patient: LPS patient coordinates");
-      j.Set("frame", frame->GetValue(0));
-    }
-    if (auto* m = vtkDoubleArray::SafeDownCast(img->GetFieldData()->GetArray("IndexToWorld")))
-    {
-      j.Set("index_to_world", std::vector<double>(m->GetPointer(0), m->GetPointer(0) + 16));
-    }
     Out(text, "  scalars      %s, %d component%s, %srange %s%s\n", s->GetDataTypeAsString(),
       s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "",
       s->GetNumberOfComponents() > 1 ? "magnitude " : "", Range(r[0], r[1], " .. ").c_str(),
@@ -263,6 +253,16 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
       names.push_back(n ? n : "");
     }
     j.Set("arrays", names).Set("scalars_name", s->GetName() ? s->GetName() : "");
+    if (auto* frame = vtkStringArray::SafeDownCast(img->GetFieldData()->GetAbstractArray("Frame")))
+    {
+      Out(text, "  frame        %s (--frame %s)\n", frame->GetValue(0).c_str(),
+        frame->GetValue(0) == "VTK reader" ? "vtk: as VTK's readers and ParaView place the voxels" : "patient: LPS patient coordinates");
+      j.Set("frame", frame->GetValue(0));
+    }
+    if (auto* m = vtkDoubleArray::SafeDownCast(img->GetFieldData()->GetArray("IndexToWorld")))
+    {
+      j.Set("index_to_world", std::vector<double>(m->GetPointer(0), m->GetPointer(0) + 16));
+    }
     j.Set("dimensions", std::vector<double>{ double(d[0]), double(d[1]), double(d[2]) })
       .Set("spacing", std::vector<double>(sp, sp + 3))
       .Set("origin", std::vector<double>(o, o + 3))
