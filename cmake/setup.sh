@@ -4,6 +4,8 @@
 #   cmake/setup.sh          set up and build
 #   cmake/setup.sh demo     ... then run the main job on the embedded default data
 #   cmake/setup.sh test     ... then run every test through ctest (under Xvfb when no display)
+#   cmake/setup.sh fuzz [S] ... then build the loaders' fuzzing targets with clang (tests/fuzz) and
+#                           run each for S seconds (default 120); not part of CI
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -18,6 +20,11 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+if [ "${1:-}" = fuzz ]; then
+  for p in clang-14 libclang-rt-14-dev; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+fi
 if ((${#missing[@]})); then
   echo "setup: installing ${missing[*]}" >&2
   sudo=""
@@ -38,10 +45,14 @@ case "${1:-}" in
   "") ;;
   demo)
     build/bin/adaptivert demo ;;
+  fuzz)
+    cmake --preset fuzz >&2
+    cmake --build --preset fuzz >&2
+    tests/fuzz/run.sh "${2:-120}" ;;
   test)
     run=()
     if [ -z "${DISPLAY:-}" ]; then run=(xvfb-run -a -s "-screen 0 1280x1024x24"); fi
     "${run[@]}" ctest --preset release ;;
   *)
-    echo "setup: unknown action '$1' (use demo or test)" >&2; exit 2 ;;
+    echo "setup: unknown action '$1' (use demo, test or fuzz)" >&2; exit 2 ;;
 esac

@@ -230,6 +230,57 @@ void CheckInflatedSize(const std::string& dataFile, std::streamoff offset, long 
       path);
   }
 }
+// MetaIO reads the header in order and needs NDims before the fields sized by it: ElementSpacing
+// first failed with MetaIO's own lines ("ElementSpacing defined prior to defining NDims").
+void RequireNDimsFirst(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for (int n = 0; n < 200 && std::getline(in, line); ++n)
+  {
+    const std::string key = Trim(line.substr(0, line.find('=')));
+    if (key == "NDims" || key == "ElementDataFile")
+    {
+      return;
+    }
+    for (const char* sized : { "DimSize", "ElementSpacing", "ElementSize", "Offset", "Origin", "Position",
+           "TransformMatrix", "Rotation", "Orientation", "CenterOfRotation" })
+    {
+      if (key == sized)
+      {
+        throw Error(key + " comes before NDims in the header; MetaIO needs NDims first", path);
+      }
+    }
+  }
+}
+
+// Text voxels (BinaryData = False): as many numbers as DimSize needs (MetaIO read a short list
+// with a line of its own and left the rest of the image unset).
+void RequireTextValues(const Keys& keys, const std::string& path, std::streamoff dataStart, long long need)
+{
+  const auto edf = keys.find("ElementDataFile");
+  if (edf == keys.end() || (edf->second != "LOCAL" && edf->second != "Local" && edf->second != "local"))
+  {
+    return; // a separate text file: MetaIO's reader reports it
+  }
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(dataStart);
+  long long values = 0;
+  for (std::string word; values < need && in >> word; ++values)
+  {
+    char* end = nullptr;
+    std::strtod(word.c_str(), &end);
+    if (*end != '\0')
+    {
+      throw Error("text voxel " + std::to_string(values + 1) + " is not a number: '" + word.substr(0, 20) + "'", path);
+    }
+  }
+  if (values < need)
+  {
+    throw Error("holds " + std::to_string(values) + " text voxel values; DimSize needs " + std::to_string(need), path);
+  }
+}
+
 // Far more bytes than the voxels need: the header's ElementType or DimSize does not describe the
 // data (MET_CHAR over float data read as garbage). A few bytes more (a line end) are allowed.
 void RequireNoExtraBytes(Keys& keys, long long have, long long need, int esize, const std::string& path)
@@ -260,6 +311,7 @@ void CheckMetaImage(const std::string& path)
   {
     throw Error("not a MetaImage header (no DimSize, ElementType or ElementDataFile)", path);
   }
+  RequireNDimsFirst(path);
   std::istringstream dims(keys["DimSize"]);
   unsigned long long count = 1;
   long long d;
@@ -282,6 +334,11 @@ void CheckMetaImage(const std::string& path)
   {
     throw Error("DimSize is empty", path);
   }
+  // MetaIO refused a malformed NDims with lines of its own naming another field.
+  if (keys.count("NDims") && Integer(keys, "NDims", ndims, path) != ndims)
+  {
+    throw Error("NDims = " + keys["NDims"] + " but DimSize lists " + std::to_string(ndims) + " sizes", path);
+  }
   // vtkMetaImageReader (VTK 9.1) corrupts its heap on a file of more than three axes, even when
   // the further ones hold one sample ("double free or corruption").
   if (ndims > 3)
@@ -302,6 +359,11 @@ void CheckMetaImage(const std::string& path)
   }
   const bool compressed = keys.count("CompressedData") &&
     (keys["CompressedData"] == "True" || keys["CompressedData"] == "true");
+  if (keys.count("BinaryData") && (keys["BinaryData"] == "False" || keys["BinaryData"] == "false"))
+  {
+    RequireTextValues(keys, path, dataStart, static_cast<long long>(count) * channels);
+    return;
+  }
 
   std::string dataFile = path;
   std::streamoff offset = dataStart;

@@ -132,7 +132,7 @@ add_test(NAME cli.render_bad_corpus COMMAND ${CMAKE_COMMAND} "-DPROGRAM=$<TARGET
 set_tests_properties(cli.info_bad_corpus cli.render_bad_corpus PROPERTIES LABELS unit)
 # A FIFO, a device, a file only another user may read, a full disk, a write-protected output and
 # raw voxels, made at run time (files_check.sh; 77 = skipped where the machine cannot).
-foreach(_mode fifo permission diskfull protected raw frame)
+foreach(_mode fifo permission diskfull protected raw frame batchkill)
   add_test(NAME cli.files_${_mode} COMMAND bash "${CMAKE_CURRENT_LIST_DIR}/files_check.sh" "$<TARGET_FILE:adaptivert>"
     ${_mode} "${ART_TEST_OUTPUT}/files_${_mode}" "${CMAKE_SOURCE_DIR}")
   set_tests_properties(cli.files_${_mode} PROPERTIES LABELS unit SKIP_RETURN_CODE 77 TIMEOUT 120)
@@ -143,7 +143,7 @@ art_expect_test(cli.info_strip_triangles EXIT 0 STDOUT "strips +18 \\(96 triangl
 art_expect_test(cli.info_volume_arrays EXIT 0 STDOUT "point data +MetaImage .short x1, -1024..2697"
   ARGS info "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha")
 # MetaIO printed eight lines of its own before our one.
-art_expect_test(cli.info_metaio_quiet EXIT 1 STDERR "mha-bad-ndims.mha: " ONE_LINE_STDERR
-  ARGS info "${CMAKE_SOURCE_DIR}/tests/data/corpus/mha-bad-ndims.mha")
+art_expect_test(cli.info_metaio_quiet EXIT 1 STDERR "mha-spacing-before-ndims.mha: ElementSpacing comes before NDims"
+  ONE_LINE_STDERR ARGS info "${CMAKE_SOURCE_DIR}/tests/data/corpus/mha-spacing-before-ndims.mha")
 art_expect_test(cli.info_far_vertex EXIT 1 STDERR "vtu-far-vertex.vtu: a cell refers to point 1000000000 of 27"
   ONE_LINE_STDERR ARGS info "${CMAKE_SOURCE_DIR}/tests/data/corpus/vtu-far-vertex.vtu")

@@ -104,6 +104,26 @@ case $mode in
     [[ $i =~ \"index_to_world\":\[2,0,0,0,0,3,0,0,0,0,4,0 ]] || fail "index_to_world: $i"
     expect 2 "--frame is patient or vtk, got 'ras'" "$art" info --frame ras "$nii"
     ;;
+  batchkill)
+    # A SIGKILL of `adaptivert batch` takes the render it runs with it (it kept running).
+    cat > "$work/job.json" <<JOB
+{ "output": "frames", "datasets": ["$src/data/ct-head-128.mha"], "size": "1000x1000",
+  "cameras": [{"azimuth": 0}], "settings": [{"reference": true}] }
+JOB
+    "$art" batch --quiet "$work/job.json" > /dev/null 2>&1 &
+    pid=$!
+    for _ in $(seq 100); do
+      pgrep -f -- "render .* -o $work/frames/" > /dev/null && break
+      sleep 0.1
+    done
+    pgrep -f -- "render .* -o $work/frames/" > /dev/null || fail "the batch started no render"
+    kill -9 "$pid"
+    wait "$pid" 2> /dev/null
+    sleep 0.5
+    if pgrep -f -- "render .* -o $work/frames/" > /dev/null; then
+      fail "the render of the killed batch is still running"
+    fi
+    ;;
   *)
     fail "unknown mode $mode"
     ;;

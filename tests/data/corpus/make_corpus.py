@@ -85,6 +85,11 @@ save("mha-char-over-float.mha", b"ObjectType = Image\nNDims = 3\nDimSize = 4 4 4
 # MetaImage: a header MetaIO rejects (it printed its own lines before ours).
 save("mha-bad-ndims.mha", b"ObjectType = Image\nNDims = 7x\nDimSize = 2 2 2\nElementType = MET_UCHAR\n"
      b"ElementDataFile = LOCAL\n" + bytes(8))
+# MetaImage: ElementSpacing before NDims, and text voxels too few (MetaIO printed its own lines).
+save("mha-spacing-before-ndims.mha", b"ObjectType = Image\nElementSpacing = 1 1 1\nNDims = 3\nDimSize = 2 2 2\n"
+     b"ElementType = MET_UCHAR\nElementDataFile = LOCAL\n" + bytes(8))
+save("mha-text-short.mha", b"ObjectType = Image\nNDims = 3\nBinaryData = False\nDimSize = 2 2 2\n"
+     b"ElementType = MET_UCHAR\nElementDataFile = LOCAL\n1 2 3\n")
 # NIfTI: pixdim 0 without an sform.
 h = bytearray(352)
 struct.pack_into("<i", h, 0, 348)
