@@ -3,7 +3,7 @@
 # tests use, keeping what each finds under build-fuzz/findings/<format>/.
 #   tests/fuzz/run.sh [SECONDS] [FORMAT...]     (after cmake --preset fuzz && cmake --build --preset fuzz)
 set -uo pipefail
-cd "$(dirname "$0")/../.."
+cd "$(dirname "$(readlink -f "$0")")/../.."
 seconds=${1:-120}
 shift || true
 bin=build-fuzz/bin
@@ -14,9 +14,9 @@ for f in "${formats[@]}"; do
   mkdir -p "$seeds" "$found"
   # Seeds: every file of that format in the tests' data and what the tests wrote (under 1 MB).
   if [ "$f" = dicom ]; then
-    find tests/data -name '*.dcm' -size -1M -exec cp -n {} "$seeds/" \;
+    find tests/data -name '*.dcm' -size -1024k -exec cp -n {} "$seeds/" \;
   else
-    find tests/data data build/Testing/Temporary -maxdepth 4 -type f -iname "*.$f" -size -1M \
+    find tests/data data build/Testing/Temporary -maxdepth 4 -type f -iname "*.$f" -size -1024k \
       -exec cp -n {} "$seeds/" \; 2> /dev/null
   fi
   [ -n "$(ls -A "$seeds")" ] || printf 'x' > "$seeds/empty"
