@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <cctype>
 #include <fstream>
+#include <iterator>
 #include <map>
 
 namespace fs = std::filesystem;
@@ -74,6 +76,97 @@ void CheckSpacing(const std::vector<Image>& images, const std::string& dir)
       throw Error(text, dir);
     }
   }
+}
+
+// Walks the data elements of a DICOM Part 10 file up to its pixel data and returns what is wrong
+// with them, or "": DICOMParser trusts each element's length (a length past the end of the file
+// corrupted its heap: a crash in ~DICOMAppHelper). Sequences of undefined length end the walk.
+std::string ElementProblem(const fs::path& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  std::string b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto size = static_cast<unsigned long long>(b.size());
+  if (size < 132 || b.compare(128, 4, "DICM") != 0)
+  {
+    return ""; // not Part 10: DICOMParser says so
+  }
+  auto u16 = [&](std::size_t at, bool big) {
+    const auto* p = reinterpret_cast<const unsigned char*>(b.data() + at);
+    return big ? unsigned(p[0] << 8 | p[1]) : unsigned(p[1] << 8 | p[0]);
+  };
+  auto u32 = [&](std::size_t at, bool big) {
+    return big ? (static_cast<unsigned long long>(u16(at, true)) << 16 | u16(at + 2, true))
+               : (static_cast<unsigned long long>(u16(at + 2, false)) << 16 | u16(at, false));
+  };
+  std::size_t at = 132;
+  bool explicitVr = true, big = false, meta = true;
+  std::string syntax;
+  while (at + 8 <= size)
+  {
+    const unsigned group = u16(at, big && !meta), element = u16(at + 2, big && !meta);
+    char tag[16];
+    std::snprintf(tag, sizeof tag, "(%04X,%04X)", group, element);
+    if (meta && group != 0x0002)
+    {
+      // The data set after the meta group, in the transfer syntax it names.
+      meta = false;
+      explicitVr = syntax != "1.2.840.10008.1.2";
+      big = syntax == "1.2.840.10008.1.2.2";
+      continue;
+    }
+    if (group == 0x7FE0 && element == 0x0010)
+    {
+      return ""; // the pixel data: their length is checked against the image size later
+    }
+    unsigned long long length;
+    std::size_t header = 8;
+    const bool be = big && !meta;
+    if (explicitVr || meta)
+    {
+      const std::string vr = b.substr(at + 4, 2);
+      if (!(std::isupper(static_cast<unsigned char>(vr[0])) && std::isupper(static_cast<unsigned char>(vr[1]))))
+      {
+        return std::string("element ") + tag + " has no value representation";
+      }
+      static const std::string longVr = "OB OW OF SQ UT UN OD OL OV UC UR SV UV";
+      if (longVr.find(vr) != std::string::npos)
+      {
+        if (at + 12 > size)
+        {
+          return "cut short inside an element's header";
+        }
+        length = u32(at + 8, be);
+        header = 12;
+      }
+      else
+      {
+        length = u16(at + 6, be);
+      }
+    }
+    else
+    {
+      length = u32(at + 4, be);
+    }
+    if (length == 0xFFFFFFFFULL)
+    {
+      return ""; // a sequence of undefined length: left to the parser
+    }
+    if (at + header + length > size)
+    {
+      return std::string("element ") + tag + " of " + std::to_string(length) +
+        " bytes runs past the end of the file (" + std::to_string(size) + " bytes)";
+    }
+    if (meta && group == 0x0002 && element == 0x0010)
+    {
+      syntax = b.substr(at + header, static_cast<std::size_t>(length));
+      while (!syntax.empty() && (syntax.back() == '\0' || syntax.back() == ' '))
+      {
+        syntax.pop_back();
+      }
+    }
+    at += header + static_cast<std::size_t>(length);
+  }
+  return "";
 }
 
 // The bytes after the pixel data element's header (7FE0,0010; the last in the file), or -1 when
@@ -148,6 +241,11 @@ std::vector<std::string> DicomSeriesFiles(const std::string& dir, int* seriesInF
   std::sort(paths.begin(), paths.end());
   for (const fs::path& p : paths)
   {
+    const std::string problem = ElementProblem(p);
+    if (!problem.empty())
+    {
+      throw Error("slice " + p.filename().string() + ": " + problem, dir);
+    }
     DICOMParser parser;
     DICOMAppHelper helper;
     if (!parser.OpenFile(p.string()) || !parser.IsDICOMFile())

@@ -6,6 +6,8 @@
 #include <vtkImageReader.h>
 #include <vtkNew.h>
 
+#include <tiffio.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -288,9 +290,16 @@ void CheckTecplot(const std::string& path)
   {
     throw Error("is a binary Tecplot file (.plt), which VTK does not read: save it as ASCII Tecplot", path);
   }
-  if (upper.find("ZONE") == std::string::npos || upper.find("VARIABLES") == std::string::npos)
+  const std::size_t variables = upper.find("VARIABLES"), zone = upper.find("\nZONE");
+  if (zone == std::string::npos || variables == std::string::npos || variables > zone)
   {
-    throw Error("not an ASCII Tecplot file (no VARIABLES and ZONE lines)", path);
+    throw Error("not an ASCII Tecplot file (no VARIABLES line before a ZONE line)", path);
+  }
+  // An unclosed quote in the variable names sent vtkTecplotReader reading the rest of the file
+  // as names, without end.
+  if (std::count(head.begin() + variables, head.begin() + zone, '"') % 2 != 0)
+  {
+    throw Error("the VARIABLES line has an unclosed quote", path);
   }
 }
 
@@ -315,16 +324,126 @@ void CheckGambit(const std::string& path)
 
 void CheckByu(const std::string& path)
 {
-  const std::vector<long long> c = LeadingCounts(path, 4);
-  if (c.size() < 4 || c[0] < 1 || c[1] < 0 || c[2] < 0 || c[3] < 0)
+  // Header "parts points polygons corners", the parts' first and last polygons, 3 coordinates
+  // per point, then the corners: point numbers from 1, a polygon's last one negative. Read here
+  // token by token: vtkBYUReader looped without end on a word where it wanted a number.
+  std::ifstream in(path);
+  long long parts = -1, points = -1, polygons = -1, corners = -1;
+  in >> parts >> points >> polygons >> corners;
+  if (!in || parts < 1 || points < 1 || polygons < 1 || corners < 3 || points > (1LL << 31) || corners > (1LL << 31))
   {
-    throw Error("not a BYU file (no line of counts: parts points polygons edges)", path);
+    throw Error("not a BYU file (no line of counts: parts points polygons corners)", path);
   }
-  if ((c[1] * 3 + c[3]) * 2 > FileSize(path))
+  if ((points * 3 + corners) * 2 > FileSize(path))
   {
-    throw Error(Truncated((c[1] * 3 + c[3]) * 2, FileSize(path)) + " (" + std::to_string(c[1]) + " points, " +
-        std::to_string(c[3]) + " corners)",
+    throw Error(Truncated((points * 3 + corners) * 2, FileSize(path)) + " (" + std::to_string(points) + " points, " +
+        std::to_string(corners) + " corners)",
       path);
+  }
+  for (long long i = 0; i < 2 * parts; ++i)
+  {
+    long long v;
+    if (!(in >> v) || v < 1 || v > polygons)
+    {
+      throw Error("a part's polygon range is missing or outside 1.." + std::to_string(polygons), path);
+    }
+  }
+  for (long long i = 0; i < 3 * points; ++i)
+  {
+    double x;
+    if (!(in >> x) || !std::isfinite(x))
+    {
+      throw Error("coordinate " + std::to_string(i / 3 + 1) + " of " + std::to_string(points) +
+          " points is missing or not a number",
+        path);
+    }
+  }
+  long long ends = 0;
+  for (long long i = 0; i < corners; ++i)
+  {
+    long long v;
+    if (!(in >> v) || v == 0 || std::llabs(v) > points)
+    {
+      throw Error("corner " + std::to_string(i + 1) + " of " + std::to_string(corners) +
+          " is missing or names no point of 1.." + std::to_string(points),
+        path);
+    }
+    ends += v < 0;
+  }
+  if (ends != polygons)
+  {
+    throw Error("the corners close " + std::to_string(ends) + " polygons; the header counts " +
+        std::to_string(polygons),
+      path);
+  }
+}
+
+void CheckTiff(const std::string& path)
+{
+  // libtiff's own warnings and errors would reach the terminal; the check says what is wrong.
+  TIFFSetWarningHandler(nullptr);
+  TIFFSetErrorHandler(nullptr);
+  TIFF* t = TIFFOpen(path.c_str(), "r");
+  if (!t)
+  {
+    throw Error("is not a TIFF file libtiff opens", path);
+  }
+  std::string problem;
+  int page = 0;
+  std::uint16_t pagesSaid = 0;
+  std::uint32_t firstW = 0, firstH = 0;
+  do
+  {
+    std::uint32_t w = 0, h = 0, rows = 0;
+    std::uint16_t bits = 0, samples = 1, photometric = 0, sub[2] = { 1, 1 };
+    TIFFGetField(t, TIFFTAG_IMAGEWIDTH, &w);
+    TIFFGetField(t, TIFFTAG_IMAGELENGTH, &h);
+    TIFFGetFieldDefaulted(t, TIFFTAG_BITSPERSAMPLE, &bits);
+    TIFFGetFieldDefaulted(t, TIFFTAG_SAMPLESPERPIXEL, &samples);
+    TIFFGetFieldDefaulted(t, TIFFTAG_PHOTOMETRIC, &photometric);
+    const bool tiled = TIFFIsTiled(t);
+    if (!tiled)
+    {
+      TIFFGetFieldDefaulted(t, TIFFTAG_ROWSPERSTRIP, &rows);
+    }
+    if (photometric == PHOTOMETRIC_YCBCR)
+    {
+      TIFFGetFieldDefaulted(t, TIFFTAG_YCBCRSUBSAMPLING, &sub[0], &sub[1]);
+    }
+    const auto goodSub = [](std::uint16_t v) { return v == 1 || v == 2 || v == 4; };
+    // libtiff divided by a zero strip height or subsampling (a floating-point exception).
+    if (w == 0 || h == 0 || (!tiled && rows == 0) || !(bits == 1 || bits == 8 || bits == 16 || bits == 32 || bits == 64) ||
+      samples < 1 || samples > 4 || !goodSub(sub[0]) || !goodSub(sub[1]) || TIFFScanlineSize64(t) <= 0)
+    {
+      problem = "page " + std::to_string(page + 1) + " is " + std::to_string(w) + " x " + std::to_string(h) + " of " +
+        std::to_string(samples) + " x " + std::to_string(bits) + "-bit samples in strips of " + std::to_string(rows) +
+        " rows: not an image VTK's TIFF reader reads";
+    }
+    std::uint16_t number = 0, total = 0;
+    if (TIFFGetField(t, TIFFTAG_PAGENUMBER, &number, &total))
+    {
+      pagesSaid = std::max(pagesSaid, total);
+    }
+    if (problem.empty() && page > 0 && (w != firstW || h != firstH))
+    {
+      problem = "page " + std::to_string(page + 1) + " is " + std::to_string(w) + " x " + std::to_string(h) +
+        ", page 1 " + std::to_string(firstW) + " x " + std::to_string(firstH) + ": the pages of a volume share a size";
+    }
+    firstW = page == 0 ? w : firstW;
+    firstH = page == 0 ? h : firstH;
+    ++page;
+  } while (problem.empty() && page < 100000 && TIFFReadDirectory(t));
+  // The pages VTK reads as slices are the ones the PageNumber tag counts; fewer readable pages
+  // had libtiff read a missing one (a floating-point exception).
+  if (problem.empty() && pagesSaid > page)
+  {
+    problem = "its PageNumber tags count " + std::to_string(pagesSaid) + " pages; " + std::to_string(page) +
+      " can be read (damaged or cut short)";
+  }
+  TIFFClose(t);
+  if (!problem.empty())
+  {
+    throw Error(problem, path);
   }
 }
 

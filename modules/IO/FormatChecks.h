@@ -21,6 +21,8 @@ void CheckAvsUcd(const std::string& path);
 void CheckTecplot(const std::string& path);
 void CheckGambit(const std::string& path);
 void CheckByu(const std::string& path);
+/// Every page of a TIFF file: sizes, samples and strips libtiff can read (it crashed on others).
+void CheckTiff(const std::string& path);
 /// A BioRad .pic (76-byte header, 8- or 16-bit voxels, notes giving the spacing) as a reader.
 vtkSmartPointer<vtkAlgorithm> BioRadReader(const std::string& path);
 } // namespace art

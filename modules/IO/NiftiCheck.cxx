@@ -47,6 +47,13 @@ void CheckNifti(const std::string& path)
   const std::int32_t size = Get<std::int32_t>(b, 0, false);
   const bool swap = size == 0x5C010000 || size == 0x1C020000; // 348 or 540, other byte order
   const std::int32_t hdr = swap ? Get<std::int32_t>(b, 0, true) : size;
+  const bool magic1 = got >= 348 && (std::memcmp(b + 344, "n+1", 4) == 0 || std::memcmp(b + 344, "ni1", 4) == 0);
+  const bool magic2 = got >= 12 && (std::memcmp(b + 4, "n+2", 3) == 0 || std::memcmp(b + 4, "ni2", 3) == 0);
+  if ((hdr != 348 && hdr != 540) && (magic1 || magic2))
+  {
+    // VTK's reader went on with such a header and crashed reading it.
+    throw Error("NIfTI header size (sizeof_hdr) is " + std::to_string(size) + ", expected 348 or 540", path);
+  }
   if ((hdr != 348 && hdr != 540) || got < hdr)
   {
     return; // not a NIfTI header: VTK's reader says so
@@ -67,6 +74,13 @@ void CheckNifti(const std::string& path)
   {
     throw Error("NIfTI datatype " + std::to_string(datatype) +
         " is not one VTK reads (8 to 64-bit integers, float32/64, complex64/128, RGB24, RGBA32)",
+      path);
+  }
+  const int bitpix = Get<std::int16_t>(b, two ? 14 : 72, swap);
+  if (bitpix != type->second)
+  {
+    throw Error("NIfTI bitpix " + std::to_string(bitpix) + " does not match datatype " + std::to_string(datatype) +
+        " (" + std::to_string(type->second) + " bits)",
       path);
   }
   if (dim[0] < 1 || dim[0] > 7)

@@ -110,6 +110,17 @@ void RequireDimension(Fields& keys, const std::string& path)
   }
   std::istringstream sizes(keys["sizes"]);
   std::vector<std::string> w{ std::istream_iterator<std::string>(sizes), std::istream_iterator<std::string>() };
+  for (const std::string& size : w)
+  {
+    char* e = nullptr;
+    const long long n = std::strtoll(size.c_str(), &e, 10);
+    if (*e != '\0' || n < 1)
+    {
+      throw Error("sizes '" + keys["sizes"].substr(0, 60) + "' holds '" + size.substr(0, 20) +
+          "', not a positive whole number",
+        path);
+    }
+  }
   if (static_cast<long>(w.size()) != dimension)
   {
     throw Error("sizes '" + keys["sizes"].substr(0, 60) + "' lists " + std::to_string(w.size()) +
@@ -218,6 +229,31 @@ void RequireRawBytes(Fields& keys, const std::string& df, long long attachedStar
 }
 } // namespace
 
+namespace
+{
+// The fields vtkNrrdReader needs, with values it reads (it crashed on a missing encoding).
+void RequireTypeAndEncoding(Fields& keys, const std::string& path)
+{
+  if (NrrdTypeSize(keys["type"]) == 0)
+  {
+    throw Error("type '" + keys["type"].substr(0, 30) + "' is not a NRRD type VTK reads", path);
+  }
+  static const char* const encodings[] = { "raw", "ascii", "text", "txt", "gzip", "gz" };
+  const std::string e = keys["encoding"];
+  if (std::find(std::begin(encodings), std::end(encodings), e) == std::end(encodings))
+  {
+    throw Error(e.empty() ? std::string("the header has no encoding field")
+                          : "encoding '" + e.substr(0, 30) + "' is not one VTK reads (raw, ascii, gzip)",
+      path);
+  }
+  const std::string endian = keys["endian"];
+  if (!endian.empty() && endian != "little" && endian != "big")
+  {
+    throw Error("endian '" + endian.substr(0, 30) + "' is neither little nor big", path);
+  }
+}
+} // namespace
+
 void CheckNrrd(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);
@@ -233,6 +269,7 @@ void CheckNrrd(const std::string& path)
   in.clear();
   const std::streamoff attachedStart = in.tellg();
   RequireDimension(keys, path);
+  RequireTypeAndEncoding(keys, path);
   RefuseSpatialFourthAxis(keys, path);
   const std::string df = DataFileField(keys);
   RefuseFileSeries(df, path);

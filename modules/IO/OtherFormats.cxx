@@ -61,6 +61,11 @@ vtkSmartPointer<vtkImageReader2> SliceReader(const std::string& ext)
 void SliceExtent(const std::string& file, int extent[6], int* components)
 {
   RequireRegularFile(file);
+  const std::string e = LowerExtension(file);
+  if (e == ".tif" || e == ".tiff")
+  {
+    CheckTiff(file);
+  }
   vtkSmartPointer<vtkImageReader2> r = SliceReader(LowerExtension(file));
   if (!r->CanReadFile(file.c_str()))
   {
@@ -177,6 +182,7 @@ vtkSmartPointer<vtkAlgorithm> RawReader(const std::string& path, const RawLayout
 // A multi-page TIFF is a volume; one 2-D image is not (a stack is a folder or a pattern).
 vtkSmartPointer<vtkAlgorithm> TiffReader(const std::string& path)
 {
+  CheckTiff(path);
   vtkNew<vtkTIFFReader> r;
   if (!r->CanReadFile(path.c_str()))
   {

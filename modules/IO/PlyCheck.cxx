@@ -370,6 +370,28 @@ struct PlyHeader
   long long minBody = 0; ///< the fewest body bytes the elements take (each list at least its count)
 };
 
+// vtkPLYReader looks up the "vertex" element and its x, y, z without checking they are there (a
+// file naming it "veztex" crashed it).
+void RequireVertices(const std::vector<Element>& layout, const std::string& path)
+{
+  for (const Element& e : layout)
+  {
+    if (e.name != "vertex")
+    {
+      continue;
+    }
+    for (const char* axis : { "x", "y", "z" })
+    {
+      if (std::none_of(e.props.begin(), e.props.end(), [axis](const Property& p) { return p.name == axis && p.countType.empty(); }))
+      {
+        throw Error(std::string("the vertex element has no '") + axis + "' property", path);
+      }
+    }
+    return;
+  }
+  throw Error("has no 'vertex' element", path);
+}
+
 // The header's lines after "ply" up to end_header: format, elements and their properties.
 PlyHeader ReadPlyHeader(std::istream& in, const std::string& path)
 {
@@ -485,6 +507,7 @@ void CheckPly(const std::string& path, std::vector<double>* xyz, std::vector<dou
     throw Error("not a PLY file (no 'ply' magic line)", path);
   }
   const PlyHeader h = ReadPlyHeader(in, path);
+  RequireVertices(h.layout, path);
   const long long bodyStart = static_cast<long long>(in.tellg());
   std::error_code ec;
   const long long size = static_cast<long long>(std::filesystem::file_size(path, ec));

@@ -1,6 +1,7 @@
 #include "ReaderRun.h"
 #include "AvailableMemory.h"
 #include "Error.h"
+#include "LegacyCheck.h"
 #include "RegularFile.h"
 #include "StreamCapture.h"
 
@@ -81,6 +82,7 @@ bool DataWarning(const std::string& w)
 
 vtkSmartPointer<vtkAlgorithm> LegacyReader(const std::string& path)
 {
+  CheckLegacyVtk(path);
   vtkNew<vtkDataSetReader> probe;
   probe->SetFileName(path.c_str());
   ErrorCatcher catcher(probe);

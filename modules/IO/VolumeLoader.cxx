@@ -250,9 +250,13 @@ namespace
 // out vtkPNrrdReader, which refuses to read without an MPI controller.
 vtkSmartPointer<vtkAlgorithm> PlainNrrdReader(const std::string& path)
 {
-  vtkObjectFactory::SetAllEnableFlags(0, "vtkNrrdReader");
   auto r = vtkSmartPointer<vtkNrrdReader>::New();
-  vtkObjectFactory::SetAllEnableFlags(1, "vtkNrrdReader");
+  if (std::string(r->GetClassName()) != "vtkNrrdReader")
+  {
+    vtkObjectFactory::SetAllEnableFlags(0, "vtkNrrdReader"); // factories are registered: one made r
+    r = vtkSmartPointer<vtkNrrdReader>::New();
+    vtkObjectFactory::SetAllEnableFlags(1, "vtkNrrdReader");
+  }
   r->SetFileName(path.c_str());
   return r;
 }

@@ -338,17 +338,90 @@ unsigned long long ReadHeaderWord(std::ifstream& in, int size, bool bigEndian, b
   return v;
 }
 
+// The first `n` bytes base64 encodes at `at` (VTK encodes each array's length header apart from
+// its data); false when the file ends first or holds other characters.
+bool DecodeBase64(std::ifstream& in, long long at, int n, unsigned char* out)
+{
+  static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string text((n + 2) / 3 * 4, '\0');
+  in.clear();
+  in.seekg(at);
+  if (!in.read(&text[0], static_cast<std::streamsize>(text.size())))
+  {
+    return false;
+  }
+  int got = 0;
+  for (std::size_t i = 0; i < text.size() && got < n; i += 4)
+  {
+    unsigned v = 0;
+    for (int k = 0; k < 4; ++k)
+    {
+      const std::size_t d = text[i + k] == '=' ? 0 : alphabet.find(text[i + k]);
+      if (d == std::string::npos)
+      {
+        return false;
+      }
+      v = v << 6 | static_cast<unsigned>(d);
+    }
+    for (int k = 2; k >= 0 && got < n; --k)
+    {
+      out[got++] = static_cast<unsigned char>(v >> (8 * k));
+    }
+  }
+  return got == n;
+}
+
+// Base64 appended data: each array's length (or its compressed blocks' count) must be what the
+// rest of the file can hold, 3 bytes for every 4 characters (a block count of billions had VTK
+// allocate for them).
+void CheckBase64Appended(const Scan& s, std::ifstream& in, int h, bool big, long long fileSize, const std::string& path)
+{
+  for (const Appended& a : s.Arrays)
+  {
+    const long long at = s.AppendStart + a.Offset;
+    unsigned char word[8] = {};
+    if (!DecodeBase64(in, at, h, word))
+    {
+      throw Error("truncated or damaged: the base64 appended data of array '" + a.Name.substr(0, 40) +
+          "' have no readable length",
+        path);
+    }
+    if (big)
+    {
+      std::reverse(word, word + h);
+    }
+    unsigned long long first = 0;
+    for (int i = h - 1; i >= 0; --i)
+    {
+      first = (first << 8) | word[i];
+    }
+    const unsigned long long room = static_cast<unsigned long long>(std::max(0LL, fileSize - at)) * 3 / 4;
+    const unsigned long long need = s.Compressor.empty() ? first : first * static_cast<unsigned long long>(h);
+    if (need > room)
+    {
+      throw Error("truncated or damaged: the base64 appended data of array '" + a.Name.substr(0, 40) + "' claim " +
+          std::to_string(need) + " bytes, the file holds at most " + std::to_string(room),
+        path);
+    }
+  }
+}
+
 // Each appended array's bytes (its length header, and for compressed data its block table) must
 // lie within the file: VTK read the missing bytes of a cut file as zeros.
 void CheckAppended(const Scan& s, long long fileSize, const std::string& path)
 {
-  if (s.AppendStart < 0 || s.Encoding != "raw")
+  if (s.AppendStart < 0)
   {
-    return; // base64 appended data: the end tag check covers a cut
+    return;
   }
   std::ifstream in(path, std::ios::binary);
   const int h = s.HeaderType == "UInt64" ? 8 : 4;
   const bool big = s.ByteOrder == "BigEndian";
+  if (s.Encoding == "base64")
+  {
+    CheckBase64Appended(s, in, h, big, fileSize, path);
+    return;
+  }
   for (const Appended& a : s.Arrays)
   {
     const long long at = s.AppendStart + a.Offset;
@@ -369,12 +442,22 @@ void CheckAppended(const Scan& s, long long fileSize, const std::string& path)
         ok = ok && blocks < (1ULL << 31) && at + h * (3 + static_cast<long long>(blocks)) <= fileSize;
         if (ok)
         {
-          ReadHeaderWord(in, h, big, ok);
-          ReadHeaderWord(in, h, big, ok);
+          const unsigned long long blockSize = ReadHeaderWord(in, h, big, ok);
+          const unsigned long long lastSize = ReadHeaderWord(in, h, big, ok);
           end = at + h * (3 + static_cast<long long>(blocks));
           for (unsigned long long b = 0; ok && b < blocks; ++b)
           {
-            end += static_cast<long long>(std::min<unsigned long long>(ReadHeaderWord(in, h, big, ok), 1ULL << 40));
+            const unsigned long long packed = std::min<unsigned long long>(ReadHeaderWord(in, h, big, ok), 1ULL << 40);
+            // zlib packs at most 1032 to 1: a block said to hold more (VTK allocated and zeroed
+            // gigabytes for one) is damage.
+            const unsigned long long unpacked = b + 1 == blocks && lastSize > 0 ? lastSize : blockSize;
+            if (unpacked > 1032 * packed + 1024 || unpacked > (1ULL << 31))
+            {
+              throw Error("the compressed appended data of array '" + a.Name.substr(0, 40) + "' claim " +
+                  std::to_string(unpacked) + " bytes from a block of " + std::to_string(packed),
+                path);
+            }
+            end += static_cast<long long>(packed);
           }
         }
       }

@@ -178,6 +178,35 @@ TEST(BadFiles, AppendedImageCutShort)
   }
 }
 
+// Base64 appended data (VTK's writers' default) read whole, compressed or not, and a block count
+// past what the file holds is refused (VTK allocated for billions of blocks).
+TEST(BadFiles, Base64AppendedData)
+{
+  for (bool compressed : { false, true })
+  {
+    const std::string p = Dir() + (compressed ? "/base64-z.vti" : "/base64.vti");
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(Wavelet());
+    w->SetFileName(p.c_str());
+    w->SetDataModeToAppended();
+    w->EncodeAppendedDataOn();
+    if (!compressed)
+    {
+      w->SetCompressorTypeToNone();
+    }
+    w->Write();
+    auto img = art::LoadVolume(p);
+    EXPECT_EQ(img->GetNumberOfPoints(), 16 * 16 * 16);
+    EXPECT_EQ(img->GetPointData()->GetScalars()->GetTuple1(100), Wavelet()->GetPointData()->GetScalars()->GetTuple1(100));
+    std::string bytes = Read(p);
+    const std::size_t data = bytes.find('_', bytes.find("<AppendedData")) + 1;
+    bytes.replace(data, 8, "////////"); // the first array's length (or block count): 2^32 - 1
+    const std::string bad = Dir() + (compressed ? "/base64-z-bad.vti" : "/base64-bad.vti");
+    Write(bad, bytes);
+    ExpectRefused(bad, "the base64 appended data of array 'RTData' claim");
+  }
+}
+
 TEST(BadFiles, NanSpacingInXml)
 {
   const std::string good = Read(AppendedVti(false));
