@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -256,25 +257,89 @@ std::string CheckAnalyze(const std::string& path)
 
 void CheckAvsUcd(const std::string& path)
 {
-  // ASCII: "nodes cells node-data cell-data model-data" after the comments; binary files start
-  // with a version byte and are checked by the reader.
+  // ASCII: "nodes cells node-data cell-data model-data" after the comments, a line per node
+  // (id x y z) and per cell (id material type ids...), then the node data (components, labels,
+  // a line per node). vtkAVSucdReader maps ids without a bound: a cell or data line naming a node
+  // that is not there wrote past its tables. Binary files (a version byte first) are left to it.
   std::ifstream in(path, std::ios::binary);
-  const int first = in.peek();
-  if (first == 7)
+  if (in.peek() == 7)
   {
     return;
   }
-  const std::vector<long long> c = LeadingCounts(path, 5);
-  if (c.size() < 5 || std::any_of(c.begin(), c.end(), [](long long x) { return x < 0; }))
+  std::string line;
+  auto next = [&]() {
+    while (std::getline(in, line))
+    {
+      if (!line.empty() && line[0] != '#')
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  auto fail = [&](const std::string& what) { throw Error(what, path); };
+  long long c[5] = { -1, -1, -1, -1, -1 };
+  if (!next() || !(std::istringstream(line) >> c[0] >> c[1] >> c[2] >> c[3] >> c[4]) ||
+    std::any_of(c, c + 5, [](long long x) { return x < 0; }))
   {
-    throw Error("not an AVS UCD file (no line of five counts: nodes cells node-data cell-data model-data)", path);
+    fail("not an AVS UCD file (no line of five counts: nodes cells node-data cell-data model-data)");
   }
-  // Each node and each cell takes a line of at least a few bytes.
   if ((c[0] + c[1]) * 4 > FileSize(path))
   {
-    throw Error(Truncated((c[0] + c[1]) * 4, FileSize(path)) + " (" + std::to_string(c[0]) + " nodes, " +
-        std::to_string(c[1]) + " cells)",
-      path);
+    fail(Truncated((c[0] + c[1]) * 4, FileSize(path)) + " (" + std::to_string(c[0]) + " nodes, " +
+      std::to_string(c[1]) + " cells)");
+  }
+  std::set<long long> ids;
+  for (long long i = 0; i < c[0]; ++i)
+  {
+    long long id;
+    double x, y, z;
+    if (!next() || !(std::istringstream(line) >> id >> x >> y >> z) || !ids.insert(id).second)
+    {
+      fail("node line " + std::to_string(i + 1) + " of " + std::to_string(c[0]) + " is missing, malformed or repeats an id");
+    }
+  }
+  for (long long i = 0; i < c[1]; ++i)
+  {
+    std::istringstream cell(line);
+    long long id, material, node;
+    std::string type;
+    if (!next() || !((cell = std::istringstream(line)) >> id >> material >> type))
+    {
+      fail("cell line " + std::to_string(i + 1) + " of " + std::to_string(c[1]) + " is missing or malformed");
+    }
+    while (cell >> node)
+    {
+      if (!ids.count(node))
+      {
+        fail("cell " + std::to_string(id) + " names node " + std::to_string(node) + ", which is not defined");
+      }
+    }
+  }
+  if (c[2] > 0)
+  {
+    // Node data: "n c1 c2 ..." components, n label lines, then a line per node.
+    long long n = 0;
+    if (!next() || !(std::istringstream(line) >> n) || n < 1 || n > 1000)
+    {
+      fail("the node data have no valid component line");
+    }
+    for (long long i = 0; i < n; ++i)
+    {
+      if (!next())
+      {
+        fail("truncated: the node data's labels are missing");
+      }
+    }
+    for (long long i = 0; i < c[0]; ++i)
+    {
+      long long id;
+      if (!next() || !(std::istringstream(line) >> id) || !ids.count(id))
+      {
+        fail("node data line " + std::to_string(i + 1) + " of " + std::to_string(c[0]) +
+          " is missing or names a node that is not defined");
+      }
+    }
   }
 }
 
@@ -305,6 +370,9 @@ void CheckTecplot(const std::string& path)
 
 void CheckGambit(const std::string& path)
 {
+  // The counts line, then NODAL COORDINATES (a line per node), ELEMENTS/CELLS (id, type, node
+  // count, nodes) and ELEMENT GROUPs naming elements. vtkGAMBITReader indexes its tables by what
+  // these say without a bound (a group naming elements of a missing section read past them).
   std::ifstream in(path);
   std::string line;
   for (int i = 0; i < 6 && std::getline(in, line); ++i)
@@ -319,6 +387,64 @@ void CheckGambit(const std::string& path)
   if ((numnp + nelem) * 4 > FileSize(path))
   {
     throw Error(Truncated((numnp + nelem) * 4, FileSize(path)), path);
+  }
+  auto section = [&](const char* name) {
+    while (std::getline(in, line))
+    {
+      if (line.find(name) != std::string::npos)
+      {
+        return true;
+      }
+    }
+    throw Error(std::string("has no ") + name + " section", path);
+  };
+  section("NODAL COORDINATES");
+  for (long long i = 0; i < numnp; ++i)
+  {
+    long long id;
+    double x[3];
+    if (!(in >> id >> x[0] >> x[1]) || (ndfcd == 3 && !(in >> x[2])) || id != i + 1)
+    {
+      throw Error("node " + std::to_string(i + 1) + " of " + std::to_string(numnp) + " is missing or out of order", path);
+    }
+  }
+  section("ELEMENTS/CELLS");
+  for (long long i = 0; i < nelem; ++i)
+  {
+    long long id, type, n;
+    if (!(in >> id >> type >> n) || id != i + 1 || n < 1 || n > 27)
+    {
+      throw Error("element " + std::to_string(i + 1) + " of " + std::to_string(nelem) + " is missing or malformed", path);
+    }
+    for (long long k = 0; k < n; ++k)
+    {
+      long long node;
+      if (!(in >> node) || node < 1 || node > numnp)
+      {
+        throw Error("element " + std::to_string(i + 1) + " names a node outside 1.." + std::to_string(numnp), path);
+      }
+    }
+  }
+  for (long long g = 0; g < ngrps; ++g)
+  {
+    section("ELEMENT GROUP");
+    long long group = 0, count = -1, material = 0, flags = -1;
+    std::string w[4];
+    if (!(in >> w[0] >> group >> w[1] >> count >> w[2] >> material >> w[3] >> flags) || count < 0 || count > nelem ||
+      flags < 0 || flags > 100)
+    {
+      throw Error("element group " + std::to_string(g + 1) + " has no valid header", path);
+    }
+    std::string name;
+    in >> name;
+    for (long long k = 0; k < flags + count; ++k)
+    {
+      long long v;
+      if (!(in >> v) || (k >= flags && (v < 1 || v > nelem)))
+      {
+        throw Error("element group " + std::to_string(g + 1) + " names an element outside 1.." + std::to_string(nelem), path);
+      }
+    }
   }
 }
 

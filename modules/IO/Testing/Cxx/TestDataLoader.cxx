@@ -178,8 +178,8 @@ TEST(DataLoader, ImageStackFolderIsNamed)
     std::ofstream(dir + name) << "II*";
   }
   // A folder of slices is read as a stack (OtherFormats); these three bytes are no TIFF.
-  ExpectError(dir, "s0001.tif: is not a readable tif image");
-  ExpectError(dir + "/s0001.tif", "is not a TIFF file VTK reads");
+  ExpectError(dir, "s0001.tif: is not a TIFF file libtiff opens");
+  ExpectError(dir + "/s0001.tif", "is not a TIFF file libtiff opens");
 }
 
 TEST(DataLoader, ObjFaceIndicesAreChecked)
