@@ -122,8 +122,9 @@ void CheckLegacyVtk(const std::string& path)
     }
     // A FIELD array's header: "name components tuples type".
     long long a, b;
-    const bool numeric = w.size() == 4 && w[3].find_first_not_of("0123456789+-.eE") == std::string::npos;
-    if (fieldArrays > 0 && w.size() == 4 && !numeric && Count(w[1], a) && Count(w[2], b))
+    // VTK takes the first four words, whatever follows.
+    const bool numeric = w.size() >= 4 && w[3].find_first_not_of("0123456789+-.eE") == std::string::npos;
+    if (fieldArrays > 0 && w.size() >= 4 && !numeric && Count(w[1], a) && Count(w[2], b))
     {
       RequireType(w[3], line, number, path);
       --fieldArrays;

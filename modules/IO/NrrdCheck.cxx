@@ -231,6 +231,23 @@ void RequireRawBytes(Fields& keys, const std::string& df, long long attachedStar
 
 namespace
 {
+// Control bytes in the header (a NUL inside a line) sent vtkNrrdReader reading without end.
+void RequirePrintableHeader(const std::string& path, long long end)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string head(static_cast<std::size_t>(end < 0 ? 1 << 16 : std::min(end, 1LL << 20)), '\0');
+  in.read(&head[0], static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  for (std::size_t i = 0; i < head.size(); ++i)
+  {
+    const auto c = static_cast<unsigned char>(head[i]);
+    if (c < 0x20 && c != '\n' && c != '\r' && c != '\t')
+    {
+      throw Error("the header holds a control byte (" + std::to_string(c) + ") at byte " + std::to_string(i), path);
+    }
+  }
+}
+
 // The fields vtkNrrdReader needs, with values it reads (it crashed on a missing encoding).
 void RequireTypeAndEncoding(Fields& keys, const std::string& path)
 {
@@ -266,6 +283,7 @@ void CheckNrrd(const std::string& path)
   {
     RequireHeaderEnd(keys, path);
   }
+  RequirePrintableHeader(path, in.eof() ? -1 : static_cast<long long>(in.tellg()));
   in.clear();
   const std::streamoff attachedStart = in.tellg();
   RequireDimension(keys, path);

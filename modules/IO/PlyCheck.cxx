@@ -376,6 +376,16 @@ void RequireVertices(const std::vector<Element>& layout, const std::string& path
 {
   for (const Element& e : layout)
   {
+    // vtkPLYReader reads a face's corners from vertex_indices (or vertex_index) unchecked.
+    if (e.name == "face" && std::none_of(e.props.begin(), e.props.end(), [](const Property& p) {
+          return !p.countType.empty() && (p.name == "vertex_indices" || p.name == "vertex_index");
+        }))
+    {
+      throw Error("the face element has no vertex_indices list", path);
+    }
+  }
+  for (const Element& e : layout)
+  {
     if (e.name != "vertex")
     {
       continue;
@@ -408,6 +418,10 @@ PlyHeader ReadPlyHeader(std::istream& in, const std::string& path)
     if (!line.empty() && line.back() == '\r')
     {
       line.pop_back();
+    }
+    if (std::any_of(line.begin(), line.end(), [](char c) { return (c >= 0 && c < 0x20 && c != '\t') || c == 0x7F; }))
+    {
+      throw Error("header line " + std::to_string(n + 2) + " holds control bytes", path); // VTK cut names at a NUL
     }
     std::istringstream ls(line);
     std::string word;

@@ -34,6 +34,16 @@ void CheckStl(const std::string& path)
       throw Error("starts with a UTF-8 byte-order mark, which VTK's STL reader does not take: save it without one",
         path);
     }
+    // Text that is no ASCII STL sent vtkSTLReader looking for its keywords without end.
+    std::size_t i = 0;
+    while (i < got && std::isspace(head[i]))
+    {
+      ++i;
+    }
+    if (got - i < 5 || std::string(reinterpret_cast<const char*>(head) + i, 5) != "solid")
+    {
+      throw Error("is text but not an ASCII STL (it does not start with 'solid')", path);
+    }
     return;
   }
   if (got < 84)
