@@ -71,11 +71,15 @@ std::vector<long long> LeadingCounts(const std::string& path, std::size_t n)
 }
 } // namespace
 
-void CheckSlc(const std::string& path)
+namespace
 {
-  std::ifstream in(path, std::ios::binary);
-  long long magic = 0, size[3] = { 0, 0, 0 }, bits = 0, unit = 0, origin = 0, modality = 0, compression = -1;
+// The SLC header: "11111 x y z bits sx sy sz unit origin modality compression", then the icon
+// size "w h X" (its three planes follow the X directly). Returns the sizes and compression.
+void ReadSlcHeader(std::istream& in, long long size[3], long long& compression, const std::string& path)
+{
+  long long magic = 0, bits = 0, unit = 0, origin = 0, modality = 0;
   double spacing[3] = { 0, 0, 0 };
+  compression = -1;
   in >> magic >> size[0] >> size[1] >> size[2] >> bits >> spacing[0] >> spacing[1] >> spacing[2] >> unit >> origin >>
     modality >> compression;
   if (!in || magic != 11111)
@@ -107,60 +111,73 @@ void CheckSlc(const std::string& path)
   {
     throw Error("SLC icon size is missing or malformed", path);
   }
+  in.seekg(static_cast<std::streamoff>(in.tellg()) + 3 * iconW * iconH);
+}
+
+// Runs as vtkSLCReader decodes them: a count in the low 7 bits, then that many bytes (high bit
+// set) or one byte repeated; a zero count ends the slice. They must fill it exactly (the reader
+// wrote past the slice for a run too long).
+void CheckSlcRuns(const std::vector<unsigned char>& packed, long long plane, long long z, const std::string& path)
+{
+  long long out = 0;
+  std::size_t p = 0;
+  for (;;)
+  {
+    if (p >= packed.size())
+    {
+      throw Error("SLC slice " + std::to_string(z) + "'s runs end without their closing zero", path);
+    }
+    const unsigned char c = packed[p++];
+    const int n = c & 0x7F;
+    if (n == 0)
+    {
+      break;
+    }
+    const std::size_t used = (c & 0x80) ? static_cast<std::size_t>(n) : 1;
+    if (p + used > packed.size() || out + n > plane)
+    {
+      throw Error("SLC slice " + std::to_string(z) + "'s runs overrun the slice or its bytes", path);
+    }
+    p += used;
+    out += n;
+  }
+  if (out != plane)
+  {
+    throw Error("SLC slice " + std::to_string(z) + " decodes to " + std::to_string(out) + " of its " +
+        std::to_string(plane) + " voxels",
+      path);
+  }
+}
+} // namespace
+
+void CheckSlc(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  long long size[3] = { 0, 0, 0 }, compression = -1;
+  ReadSlcHeader(in, size, compression, path);
   const long long plane = size[0] * size[1];
   std::vector<unsigned char> packed;
-  in.seekg(static_cast<std::streamoff>(in.tellg()) + 3 * iconW * iconH);
   for (long long z = 0; z < size[2]; ++z)
   {
-    if (compression == 0)
+    long long bytes = plane;
+    if (compression == 1)
     {
-      packed.resize(static_cast<std::size_t>(plane));
-      if (!in.read(reinterpret_cast<char*>(packed.data()), plane))
+      char x = 0;
+      bytes = -1;
+      in >> bytes >> x;
+      if (!in || x != 'X' || bytes < 0 || bytes > 2 * plane + 16)
       {
-        throw Error("truncated: SLC slice " + std::to_string(z) + " of " + std::to_string(size[2]) + " is missing", path);
+        throw Error("SLC slice " + std::to_string(z) + " has no valid compressed size", path);
       }
-      continue;
-    }
-    long long bytes = -1;
-    in >> bytes >> x;
-    if (!in || x != 'X' || bytes < 0 || bytes > 2 * plane + 16)
-    {
-      throw Error("SLC slice " + std::to_string(z) + " has no valid compressed size", path);
     }
     packed.resize(static_cast<std::size_t>(bytes));
     if (!in.read(reinterpret_cast<char*>(packed.data()), bytes))
     {
       throw Error("truncated: SLC slice " + std::to_string(z) + " of " + std::to_string(size[2]) + " is missing", path);
     }
-    // Runs as vtkSLCReader decodes them: a count in the low 7 bits, then that many bytes (high
-    // bit set) or one byte repeated; a zero count ends the slice. They must fill it exactly.
-    long long out = 0;
-    std::size_t p = 0;
-    for (;;)
+    if (compression == 1)
     {
-      if (p >= packed.size())
-      {
-        throw Error("SLC slice " + std::to_string(z) + "'s runs end without their closing zero", path);
-      }
-      const unsigned char c = packed[p++];
-      const int n = c & 0x7F;
-      if (n == 0)
-      {
-        break;
-      }
-      const std::size_t used = (c & 0x80) ? static_cast<std::size_t>(n) : 1;
-      if (p + used > packed.size() || out + n > plane)
-      {
-        throw Error("SLC slice " + std::to_string(z) + "'s runs overrun the slice or its bytes", path);
-      }
-      p += used;
-      out += n;
-    }
-    if (out != plane)
-    {
-      throw Error("SLC slice " + std::to_string(z) + " decodes to " + std::to_string(out) + " of its " +
-          std::to_string(plane) + " voxels",
-        path);
+      CheckSlcRuns(packed, plane, z, path);
     }
   }
 }
@@ -360,11 +377,18 @@ void CheckTecplot(const std::string& path)
   {
     throw Error("not an ASCII Tecplot file (no VARIABLES line before a ZONE line)", path);
   }
-  // An unclosed quote in the variable names sent vtkTecplotReader reading the rest of the file
-  // as names, without end.
-  if (std::count(head.begin() + variables, head.begin() + zone, '"') % 2 != 0)
+  // An unclosed quote (in the variable names, in a ZONE line) sent vtkTecplotReader reading the
+  // rest of the file as one word, without end.
+  std::istringstream lines(head);
+  int number = 0;
+  for (std::string line; std::getline(lines, line);)
   {
-    throw Error("the VARIABLES line has an unclosed quote", path);
+    ++number;
+    const bool cut = lines.eof() && head.size() == 4096; // the last line read may go on
+    if (std::count(line.begin(), line.end(), '"') % 2 != 0 && !cut)
+    {
+      throw Error("line " + std::to_string(number) + " has an unclosed quote", path);
+    }
   }
 }
 
@@ -516,6 +540,7 @@ void CheckTiff(const std::string& path)
   }
   std::string problem;
   int page = 0;
+  const int directories = TIFFNumberOfDirectories(t); // what vtkTIFFReader reads as pages
   std::uint16_t pagesSaid = 0;
   std::uint32_t firstW = 0, firstH = 0;
   do
@@ -561,6 +586,11 @@ void CheckTiff(const std::string& path)
   } while (problem.empty() && page < 100000 && TIFFReadDirectory(t));
   // The pages VTK reads as slices are the ones the PageNumber tag counts; fewer readable pages
   // had libtiff read a missing one (a floating-point exception).
+  if (problem.empty() && directories > page)
+  {
+    problem = "it links " + std::to_string(directories) + " pages; " + std::to_string(page) +
+      " can be read (damaged or cut short)";
+  }
   if (problem.empty() && pagesSaid > page)
   {
     problem = "its PageNumber tags count " + std::to_string(pagesSaid) + " pages; " + std::to_string(page) +
