@@ -325,6 +325,11 @@ void CheckAvsUcd(const std::string& path)
     {
       fail("cell line " + std::to_string(i + 1) + " of " + std::to_string(c[1]) + " is missing or malformed");
     }
+    static const std::set<std::string> types = { "pt", "line", "tri", "quad", "tet", "pyr", "prism", "hex" };
+    if (!types.count(type))
+    {
+      fail("cell " + std::to_string(id) + " has type '" + type.substr(0, 20) + "', not one of pt line tri quad tet pyr prism hex");
+    }
     while (cell >> node)
     {
       if (!ids.count(node))
@@ -376,6 +381,39 @@ void CheckTecplot(const std::string& path)
   if (zone == std::string::npos || variables == std::string::npos || variables > zone)
   {
     throw Error("not an ASCII Tecplot file (no VARIABLES line before a ZONE line)", path);
+  }
+  // A zone must say how many points it has (N= or I=) and the file hold that many numbers after
+  // it: vtkTecplotReader waited for them at the end of the file without end.
+  {
+    const std::size_t lineEnd = upper.find('\n', zone + 1);
+    const std::string zoneLine = upper.substr(zone + 1, lineEnd == std::string::npos ? std::string::npos : lineEnd - zone - 1);
+    long long points = -1;
+    for (const char* key : { " N=", ",N=", " N =", " I=", ",I=" })
+    {
+      const std::size_t k = zoneLine.find(key);
+      if (k != std::string::npos)
+      {
+        points = std::atoll(zoneLine.c_str() + k + std::strlen(key));
+        break;
+      }
+    }
+    if (points < 1)
+    {
+      throw Error("the first ZONE line gives no point count (N= or I=)", path);
+    }
+    std::ifstream data(path, std::ios::binary);
+    data.seekg(static_cast<std::streamoff>(lineEnd == std::string::npos ? head.size() : lineEnd));
+    long long numbers = 0;
+    for (std::string w; numbers < points && data >> w;)
+    {
+      numbers += (std::isdigit(static_cast<unsigned char>(w[0])) || w[0] == '-' || w[0] == '.' || w[0] == '+') ? 1 : 0;
+    }
+    if (numbers < points)
+    {
+      throw Error("truncated: the first zone has " + std::to_string(points) + " points but " + std::to_string(numbers) +
+          " numbers follow it",
+        path);
+    }
   }
   // An unclosed quote (in the variable names, in a ZONE line) sent vtkTecplotReader reading the
   // rest of the file as one word, without end.

@@ -73,6 +73,19 @@ void CheckLegacyVtk(const std::string& path)
   std::ifstream in(path, std::ios::binary);
   std::string line;
   long long fieldArrays = 0; // array header lines still to come in a FIELD block
+  std::string dataset;       // DATASET's type
+  bool dimensions = false;   // a DIMENSIONS line of three sizes >= 1
+  // Structured data sets need DIMENSIONS before their data (a file without it crashed
+  // vtkStructuredPointsReader).
+  auto requireDimensions = [&](int number) {
+    const bool structured = dataset == "STRUCTURED_POINTS" || dataset == "STRUCTURED_GRID" || dataset == "RECTILINEAR_GRID";
+    if (structured && !dimensions)
+    {
+      throw Error(std::string(number < 1000000 ? "line " + std::to_string(number) + ": " : "") + "a " + dataset +
+          " without a DIMENSIONS line before its data",
+        path);
+    }
+  };
   for (int number = 1; number < 1000000 && std::getline(in, line); ++number)
   {
     if (!line.empty() && line.back() == '\r')
@@ -90,9 +103,28 @@ void CheckLegacyVtk(const std::string& path)
       continue; // the version line and the title
     }
     const std::string key = w[0];
+    if (key == "DATASET" && w.size() >= 2)
+    {
+      dataset = w[1];
+      continue;
+    }
+    if (key == "DIMENSIONS")
+    {
+      long long n[3];
+      if (w.size() < 4 || !Count(w[1], n[0]) || !Count(w[2], n[1]) || !Count(w[3], n[2]) || !n[0] || !n[1] || !n[2])
+      {
+        throw Error("line " + std::to_string(number) + ": DIMENSIONS needs three sizes of at least 1", path);
+      }
+      dimensions = true;
+      continue;
+    }
     const auto k = Keywords().find(key);
     if (k != Keywords().end())
     {
+      if (key == "POINTS" || key == "POINT_DATA" || key == "CELL_DATA" || key == "X_COORDINATES")
+      {
+        requireDimensions(number);
+      }
       if (k->second.Type >= 0)
       {
         if (static_cast<int>(w.size()) <= k->second.Type)
@@ -130,5 +162,6 @@ void CheckLegacyVtk(const std::string& path)
       --fieldArrays;
     }
   }
+  requireDimensions(1000000);
 }
 } // namespace art

@@ -127,10 +127,11 @@ void RequireDimension(Fields& keys, const std::string& path)
         " sizes for dimension " + std::to_string(dimension),
       path);
   }
-  if (dimension < 2 || dimension > 4)
+  if (dimension < 3 || dimension > 4)
   {
-    throw Error("a " + std::to_string(dimension) + "-D image: only 2-D slices, 3-D volumes and 4-D ones with "
-        "the first axis as components are read",
+    // vtkNrrdReader (VTK 9.1) crashed on a 2-D image.
+    throw Error("a " + std::to_string(dimension) + "-D image: only 3-D volumes, and 4-D ones with the first axis "
+        "as components, are read",
       path);
   }
 }
