@@ -382,6 +382,16 @@ void CheckTecplot(const std::string& path)
   {
     throw Error("not an ASCII Tecplot file (no VARIABLES line before a ZONE line)", path);
   }
+  // Stray bytes in the header lines (a NUL in the variable names) sent the reader reading without end.
+  for (std::size_t i = 0; i < std::min(head.size(), upper.find('\n', zone + 1)); ++i)
+  {
+    const auto c = static_cast<unsigned char>(head[i]);
+    if ((c < 0x20 && c != '\n' && c != '\r' && c != '\t') || c >= 0x7F)
+    {
+      throw Error("the header holds a byte that is not ASCII text (" + std::to_string(c) + ") at byte " + std::to_string(i),
+        path);
+    }
+  }
   // A zone must say how many points it has (N= or I=) and the file hold that many numbers after
   // it: vtkTecplotReader waited for them at the end of the file without end.
   {

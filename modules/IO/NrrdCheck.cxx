@@ -239,12 +239,18 @@ void RequirePrintableHeader(const std::string& path, long long end)
   std::string head(static_cast<std::size_t>(end < 0 ? 1 << 16 : std::min(end, 1LL << 20)), '\0');
   in.read(&head[0], static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
+  bool comment = false, lineStart = true;
   for (std::size_t i = 0; i < head.size(); ++i)
   {
     const auto c = static_cast<unsigned char>(head[i]);
-    if (c < 0x20 && c != '\n' && c != '\r' && c != '\t')
+    comment = lineStart ? c == '#' : comment;
+    lineStart = c == '\n';
+    // Fields are ASCII (comments may hold UTF-8): other bytes in a field (kinds of stray bytes)
+    // crashed vtkNrrdReader.
+    if ((c < 0x20 && c != '\n' && c != '\r' && c != '\t') || (c >= 0x7F && !comment))
     {
-      throw Error("the header holds a control byte (" + std::to_string(c) + ") at byte " + std::to_string(i), path);
+      throw Error("the header holds a byte that is not ASCII text (" + std::to_string(c) + ") at byte " + std::to_string(i),
+        path);
     }
   }
 }
