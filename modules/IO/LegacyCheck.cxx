@@ -73,6 +73,7 @@ void CheckLegacyVtk(const std::string& path)
   std::ifstream in(path, std::ios::binary);
   std::string line;
   long long fieldArrays = 0; // array header lines still to come in a FIELD block
+  bool firstArray = false;   // the next line is a FIELD block's first array header
   std::string dataset;       // DATASET's type
   bool dimensions = false;   // a DIMENSIONS line of three sizes >= 1
   // Structured data sets need DIMENSIONS before their data (a file without it crashed
@@ -105,6 +106,10 @@ void CheckLegacyVtk(const std::string& path)
     const std::string key = w[0];
     if (key == "DATASET" && w.size() >= 2)
     {
+      if (!dataset.empty())
+      {
+        throw Error("line " + std::to_string(number) + ": a second DATASET (two files joined into one?)", path);
+      }
       dataset = w[1];
       continue;
     }
@@ -150,6 +155,22 @@ void CheckLegacyVtk(const std::string& path)
       {
         throw Error("line " + std::to_string(number) + ": '" + line.substr(0, 60) + "' has no valid array count", path);
       }
+      firstArray = fieldArrays > 0;
+      continue;
+    }
+    if (firstArray)
+    {
+      // The line after FIELD is its first array's header, whatever it looks like.
+      long long a, b;
+      if (w.size() < 4 || !Count(w[1], a) || !Count(w[2], b))
+      {
+        throw Error("line " + std::to_string(number) + ": '" + line.substr(0, 60) +
+            "' is not a FIELD array header (name components tuples type)",
+          path);
+      }
+      RequireType(w[3], line, number, path);
+      --fieldArrays;
+      firstArray = false;
       continue;
     }
     // A FIELD array's header: "name components tuples type".
