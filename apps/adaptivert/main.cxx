@@ -1,6 +1,7 @@
 // adaptivert: the command-line tool. `adaptivert <subcommand> [options] INPUT...`
 // Errors: one line "adaptivert: <file>: <what>" on stderr; exit 1 at run time, 2 for usage.
 #include "cli/Command.h"
+#include "DataLoader.h"
 #include "Error.h"
 
 #include <cstdio>
@@ -20,6 +21,9 @@ void PrintOverview()
   {
     std::printf("  %-10s %s\n", c.name.c_str(), c.summary.c_str());
   }
+  const art::InputFormatList f = art::InputFormats();
+  std::printf("\ninputs (by extension):\n  volumes    %s\n  surfaces   %s\n  meshes     %s\n  and        %s\n",
+    f.volumes.c_str(), f.surfaces.c_str(), f.meshes.c_str(), f.any.c_str());
   std::printf("\n'adaptivert <command> --help' shows a command's options and examples.\n"
               "Exit codes: 0 success, 1 run-time failure (bad file, failed check), 2 usage error.\n");
 }

@@ -1,5 +1,7 @@
 #include "ViewerOptions.h"
 
+#include "DataLoader.h"
+
 #include "TransferFunction.h"
 
 #include <algorithm>
@@ -26,10 +28,13 @@ long long ParseCount(const std::string& s, const std::string& what)
 
 std::string UsageText()
 {
+  const art::InputFormatList f = art::InputFormats();
   return "usage: adaptivert-view [options] FILE\n\n"
-         "Shows a volume (.mha .mhd .nii .nii.gz .vti .pvti .nrrd .nhdr, DICOM folder), a mesh (.vtu .vts\n"
-         ".vtr, their parallel .pvtu .pvts .pvtr, .vtm) or a triangle scene (.ply .obj .stl .vtp .pvtp),\n"
-         "or a legacy .vtk file of any of them, in a window.\n"
+         "Shows a volume, a mesh or a triangle scene in a window:\n"
+         "  volumes    " + f.volumes + "\n"
+         "  meshes     " + f.meshes + "\n"
+         "  surfaces   " + f.surfaces + "\n"
+         "  and        " + f.any + "\n"
          "Volumes are reduced to adaptive tets in the background (levels from one run, fitted\n"
          "where the transfer function shows the data, vertices relocated, as `adaptivert render`\n"
          "does) and ray cast cell by cell (vtkTetRayCastMapper);\n"

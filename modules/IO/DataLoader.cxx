@@ -279,11 +279,18 @@ DataKind KindOf(const std::string& path, const LoadOptions& options)
         " (with --raw-spacing X,Y,Z for their spacing)",
       path);
   }
-  throw Error("unknown file type '" + (e.empty() ? std::string("(none)") : e) +
-      "' (volumes: .mha .mhd .nii .nii.gz .vti .pvti .nrrd .slc .mnc .pic .mrc .hdr/.img .tif, a DICOM folder, "
-      "image slices, raw with --raw-dims; surfaces: .ply .obj .stl .vtp .pvtp .g .facet; meshes: .vtu .vts .vtr "
-      ".pvtu .pvts .pvtr .vtm .exo .inp .tec .neu; any of them: legacy .vtk)",
+  const InputFormatList f = InputFormats();
+  throw Error("unknown file type '" + (e.empty() ? std::string("(none)") : e) + "' (volumes: " + f.volumes +
+      "; surfaces: " + f.surfaces + "; meshes: " + f.meshes + "; any of them: " + f.any + ")",
     path);
+}
+
+InputFormatList InputFormats()
+{
+  // One list for every program's help and errors: keep it in step with KindOf.
+  return { ".mha .mhd .nii .nii.gz .vti .pvti .nrrd .nhdr .slc .mnc .pic .mrc .hdr/.img .tif, a DICOM folder, "
+           "a folder or pattern of image slices, raw with --raw-dims",
+    ".ply .obj .stl .vtp .pvtp .g .facet", ".vtu .vts .vtr .pvtu .pvts .pvtr .vtm .exo .inp .tec .neu", "legacy .vtk" };
 }
 
 vtkSmartPointer<vtkPolyData> LoadSurface(const std::string& path)

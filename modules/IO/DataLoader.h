@@ -68,6 +68,13 @@ enum class DataKind
   // A legacy .vtk file is whichever of the three its header names.
 };
 
+/// The formats LoadData reads, by kind, as a user reads them (help texts, errors).
+struct InputFormatList
+{
+  std::string volumes, surfaces, meshes, any;
+};
+ADAPTIVERTIO_EXPORT InputFormatList InputFormats();
+
 /// The kind a path will load as; throws art::Error for a missing file or an unknown extension.
 ADAPTIVERTIO_EXPORT DataKind KindOf(const std::string& path);
 /// As KindOf; a file given a raw layout is a volume whatever its extension.
