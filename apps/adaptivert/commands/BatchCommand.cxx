@@ -270,23 +270,11 @@ void Declare(cli::Options& o)
   o.Add("retry-failed", 0, "", "render again the frames that failed in an earlier run");
 }
 
-int Run(const cli::Options& o)
+// Results of frames rendered for another version of the job (another setting, size, camera or
+// reference) are dropped, and with --retry-failed the failed ones too.
+void DropStaleResults(const cli::Options& o, const cli::BatchJob& job)
 {
-  if (o.Positional().size() != 1)
-  {
-    throw cli::UsageError("needs exactly one JOB.json");
-  }
-  const cli::BatchJob job = cli::LoadBatchJob(o.Positional()[0]);
-  for (const auto& note : job.notes)
-  {
-    std::fprintf(stderr, "adaptivert: %s: note: %s\n", job.file.c_str(), note.c_str());
-  }
   std::error_code ec;
-  fs::create_directories(job.outputDir, ec);
-  if (!fs::is_directory(job.outputDir))
-  {
-    throw art::Error("cannot create output folder '" + job.outputDir + "'", job.file);
-  }
   size_t stale = 0;
   for (const auto& t : job.tasks)
   {
@@ -313,16 +301,24 @@ int Run(const cli::Options& o)
       }
     }
   }
-  const bool quiet = o.Flag("quiet") || o.Flag("json");
-  cli::ProgressBar bar(quiet);
-  const double poll = o.GetDouble("poll");
+}
+
+struct RunCounts
+{
   size_t rendered = 0, failed = 0;
-  // A data set's frames that fail alike (a missing file: one per camera and setting, 120 lines for
-  // 40 cameras) are named once, then counted.
+  // A data set's frames that fail alike (a missing file: one per camera and setting, 120 lines
+  // for 40 cameras) are named once, then counted.
   std::map<std::pair<std::string, std::string>, size_t> alike;
+};
+
+// Renders every frame no process has rendered or claimed, references first, until all are done
+// (some perhaps by other processes sharing the job).
+RunCounts RenderFrames(const cli::BatchJob& job, cli::ProgressBar& bar, double poll)
+{
+  RunCounts n;
   for (;;)
   {
-    size_t done = 0, waiting = 0;
+    size_t done = 0;
     bool progressed = false;
     for (const auto& t : job.tasks)
     {
@@ -335,24 +331,22 @@ int Run(const cli::Options& o)
       json ref;
       if (!t.reference.empty() && !ReadResult(ResultPath(job, t.reference), ref))
       {
-        ++waiting; // its reference is still being rendered (here or by another process)
-        continue;
+        continue; // its reference is still being rendered (here or by another process)
       }
       cli::FrameClaim claim(job.outputDir + "/" + t.name + ".lock");
       if (!claim.Held() || ReadResult(ResultPath(job, t.name), r))
       {
-        ++waiting;
         continue;
       }
       bar.Update(double(done) / job.tasks.size(), t.name);
       const json res = RunTask(job, t);
       art::WriteFileAtomic(ResultPath(job, t.name), res.dump(2));
-      ++rendered;
+      ++n.rendered;
       if (res["status"] != "ok")
       {
-        ++failed;
+        ++n.failed;
         const std::string error = res["error"].get<std::string>();
-        if (alike[{ t.dataset, error }]++ == 0)
+        if (n.alike[{ t.dataset, error }]++ == 0)
         {
           bar.Finish();
           std::fprintf(stderr, "adaptivert: %s: frame %s failed: %s\n", t.dataset.c_str(), t.name.c_str(), error.c_str());
@@ -363,16 +357,39 @@ int Run(const cli::Options& o)
     }
     if (done == job.tasks.size())
     {
-      break;
+      return n;
     }
     if (!progressed)
     {
       std::this_thread::sleep_for(std::chrono::duration<double>(poll));
     }
   }
+}
+
+int Run(const cli::Options& o)
+{
+  if (o.Positional().size() != 1)
+  {
+    throw cli::UsageError("needs exactly one JOB.json");
+  }
+  const cli::BatchJob job = cli::LoadBatchJob(o.Positional()[0]);
+  for (const auto& note : job.notes)
+  {
+    std::fprintf(stderr, "adaptivert: %s: note: %s\n", job.file.c_str(), note.c_str());
+  }
+  std::error_code ec;
+  fs::create_directories(job.outputDir, ec);
+  if (!fs::is_directory(job.outputDir))
+  {
+    throw art::Error("cannot create output folder '" + job.outputDir + "'", job.file);
+  }
+  DropStaleResults(o, job);
+  const bool quiet = o.Flag("quiet") || o.Flag("json");
+  cli::ProgressBar bar(quiet);
+  const RunCounts n = RenderFrames(job, bar, o.GetDouble("poll"));
   bar.Update(1.0, "batch");
   bar.Finish();
-  for (const auto& [key, count] : alike)
+  for (const auto& [key, count] : n.alike)
   {
     if (count > 1)
     {
@@ -388,19 +405,19 @@ int Run(const cli::Options& o)
     json r;
     failedAll += ReadResult(ResultPath(job, t.name), r) && r.value("status", "") != "ok" ? 1 : 0;
   }
-  const size_t earlier = failedAll > failed ? failedAll - failed : 0;
+  const size_t earlier = failedAll > n.failed ? failedAll - n.failed : 0;
   const std::string csv = job.outputDir + "/results.csv", chart = job.outputDir + "/speed_accuracy.png";
   WriteSummary(job, csv, chart, quiet);
   if (o.Flag("json"))
   {
     // Paths are escaped: a folder named with a quote or backslash gave JSON no parser reads.
-    const nlohmann::ordered_json j = { { "tasks", job.tasks.size() }, { "rendered", rendered }, { "failed", failedAll },
-      { "failed_earlier", earlier }, { "csv", csv }, { "chart", chart } };
+    const nlohmann::ordered_json j = { { "tasks", job.tasks.size() }, { "rendered", n.rendered },
+      { "failed", failedAll }, { "failed_earlier", earlier }, { "csv", csv }, { "chart", chart } };
     std::printf("%s\n", j.dump().c_str());
   }
   else
   {
-    std::printf("tasks        %zu (%zu rendered now, %zu failed%s)\n", job.tasks.size(), rendered, failedAll,
+    std::printf("tasks        %zu (%zu rendered now, %zu failed%s)\n", job.tasks.size(), n.rendered, failedAll,
       earlier ? (", " + std::to_string(earlier) + " of them in an earlier run: --retry-failed renders them again").c_str()
               : "");
     std::printf("results      %s\n", csv.c_str());

@@ -180,6 +180,159 @@ void Orientation(const std::string& path, vtkImageData* img, std::string& text, 
   }
 }
 
+// What render and reduce would refuse in the scalars: non-finite values, magnitudes past double.
+void DescribeScalarProblems(vtkDataArray* s, const double r[2], std::string& text, cli::Json& j)
+{
+  // NaN voxels (a masked MRI map, a statistics volume) are left out of VTK's range: the range
+  // alone looked fine, and render and reduce then refused the volume.
+  const auto [nan, inf] = CountNonFinite(s);
+  if (nan + inf > 0)
+  {
+    Out(text, "  non-finite   %s NaN and %s infinite values (render and reduce need finite voxels: replace them first, e.g. with numpy.nan_to_num)\n",
+      Grouped(nan).c_str(), Grouped(inf).c_str());
+  }
+  j.Set("nan_values", nan).Set("infinite_values", inf);
+  // Values of 1e300 or 1e-310: render and reduce refuse them; say so where the range is shown.
+  if (s->GetNumberOfComponents() == 1 && std::isfinite(r[0]) && std::isfinite(r[1]))
+  {
+    try
+    {
+      art::RequireComputableRange(r[0], r[1], {});
+    }
+    catch (const art::Error& e)
+    {
+      Out(text, "  magnitude    %s\n", e.problem().c_str());
+      j.Set("magnitude_problem", e.problem());
+    }
+  }
+}
+
+// A volume: its grid, placement, scalars (their problems: NaN, magnitudes past double), arrays.
+void DescribeVolume(const std::string& path, vtkImageData* img, std::string& text, cli::Json& j)
+{
+  int d[3];
+  img->GetDimensions(d);
+  const double* sp = img->GetSpacing();
+  const double* o = img->GetOrigin();
+  vtkDataArray* s = img->GetPointData()->GetScalars();
+  // A vector's range is its magnitude's (as ParaView gives it): component 0's said nothing of it.
+  double r[2];
+  s->GetRange(r, s->GetNumberOfComponents() > 1 ? -1 : 0);
+  Out(text, "  dimensions   %d x %d x %d (%s voxels)\n", d[0], d[1], d[2],
+    Grouped(static_cast<long long>(d[0]) * d[1] * d[2]).c_str());
+  Out(text, "  spacing      %g x %g x %g\n", sp[0], sp[1], sp[2]);
+  Out(text, "  origin       %.10g, %.10g, %.10g\n", o[0], o[1], o[2]);
+  const double* dm = img->GetDirectionMatrix()->GetData();
+  if (!img->GetDirectionMatrix()->IsIdentity())
+  {
+    // The axes turned or mirrored: otherwise only the bounds would show it.
+    // + 0.0 prints -0 as 0.
+    Out(text, "  direction    [%g %g %g; %g %g %g; %g %g %g]\n", dm[0] + 0.0, dm[1] + 0.0, dm[2] + 0.0, dm[3] + 0.0,
+      dm[4] + 0.0, dm[5] + 0.0, dm[6] + 0.0, dm[7] + 0.0, dm[8] + 0.0);
+    j.Set("direction", std::vector<double>(dm, dm + 9));
+  }
+  Out(text, "  bounds       %s\n", Bounds(img).c_str());
+  Orientation(path, img, text, j);
+  Out(text, "  scalars      %s, %d component%s, %srange %s%s\n", s->GetDataTypeAsString(),
+    s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "",
+    s->GetNumberOfComponents() > 1 ? "magnitude " : "", Range(r[0], r[1], " .. ").c_str(),
+    s->GetNumberOfComponents() > 1 ? (" (--array " + art::ComponentHint(s) + ")").c_str() : "");
+  DescribeScalarProblems(s, r, text, j);
+  Out(text, "  point data   %s%s\n", ArrayList(img->GetPointData()).c_str(),
+    img->GetPointData()->GetNumberOfArrays() > 1 ? " (--array picks one)" : "");
+  if (img->GetCellData()->GetNumberOfArrays() > 0)
+  {
+    Out(text, "  cell data    %s\n", ArrayList(img->GetCellData()).c_str());
+  }
+  std::vector<std::string> names;
+  for (int i = 0; i < img->GetPointData()->GetNumberOfArrays(); ++i)
+  {
+    const char* n = img->GetPointData()->GetArrayName(i);
+    names.push_back(n ? n : "");
+  }
+  j.Set("arrays", names).Set("scalars_name", s->GetName() ? s->GetName() : "");
+  if (auto* frame = vtkStringArray::SafeDownCast(img->GetFieldData()->GetAbstractArray("Frame")))
+  {
+    Out(text, "  frame        %s (--frame %s)\n", frame->GetValue(0).c_str(),
+      frame->GetValue(0) == "VTK reader" ? "vtk: as VTK's readers and ParaView place the voxels" : "patient: LPS patient coordinates");
+    j.Set("frame", frame->GetValue(0));
+  }
+  if (auto* m = vtkDoubleArray::SafeDownCast(img->GetFieldData()->GetArray("IndexToWorld")))
+  {
+    j.Set("index_to_world", std::vector<double>(m->GetPointer(0), m->GetPointer(0) + 16));
+  }
+  j.Set("dimensions", std::vector<double>{ double(d[0]), double(d[1]), double(d[2]) })
+    .Set("spacing", std::vector<double>(sp, sp + 3))
+    .Set("origin", std::vector<double>(o, o + 3))
+    .Set("scalar_type", s->GetDataTypeAsString())
+    .Set("components", s->GetNumberOfComponents())
+    .Set("range", std::vector<double>{ r[0], r[1] });
+}
+
+// A surface: its triangles, counting those in strips and polygons alike.
+void DescribeSurface(vtkPolyData* pd, std::string& text, cli::Json& j)
+{
+  long long tris = 0, other = 0, stripTris = 0;
+  vtkCellArray* polys = pd->GetPolys();
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    (polys->GetCellSize(c) == 3 ? tris : other)++;
+  }
+  // A strip of n points holds n - 2 triangles (a .vtp of strips showed 0 triangles).
+  vtkCellArray* strips = pd->GetStrips();
+  for (vtkIdType c = 0; c < strips->GetNumberOfCells(); ++c)
+  {
+    stripTris += std::max<vtkIdType>(0, strips->GetCellSize(c) - 2);
+  }
+  Out(text, "  points       %s\n", Grouped(pd->GetNumberOfPoints()).c_str());
+  Out(text, "  polygons     %s (%s triangles, %s other)\n", Grouped(pd->GetNumberOfPolys()).c_str(),
+    Grouped(tris).c_str(), Grouped(other).c_str());
+  if (pd->GetNumberOfStrips())
+  {
+    Out(text, "  strips       %s (%s triangles)\n", Grouped(pd->GetNumberOfStrips()).c_str(), Grouped(stripTris).c_str());
+  }
+  Out(text, "  triangles    %s\n", Grouped(tris + stripTris).c_str());
+  if (pd->GetNumberOfLines() || pd->GetNumberOfVerts())
+  {
+    Out(text, "  also         %s lines, %s vertices\n", Grouped(pd->GetNumberOfLines()).c_str(),
+      Grouped(pd->GetNumberOfVerts()).c_str());
+  }
+  Out(text, "  bounds       %s\n", Bounds(pd).c_str());
+  Out(text, "  point data   %s\n", ArrayList(pd->GetPointData()).c_str());
+  Out(text, "  cell data    %s\n", ArrayList(pd->GetCellData()).c_str()); // face colours, labels
+  j.Set("points", static_cast<long long>(pd->GetNumberOfPoints()))
+    .Set("polygons", static_cast<long long>(pd->GetNumberOfPolys()))
+    .Set("triangles", tris + stripTris)
+    .Set("triangles_in_polygons", tris)
+    .Set("triangles_in_strips", stripTris)
+    .Set("strips", static_cast<long long>(pd->GetNumberOfStrips()));
+}
+
+// A mesh: its cells by type and its arrays.
+void DescribeMesh(vtkUnstructuredGrid* ug, std::string& text, cli::Json& j)
+{
+  std::map<std::string, long long> types;
+  for (vtkIdType c = 0; c < ug->GetNumberOfCells(); ++c)
+  {
+    types[vtkCellTypes::GetClassNameFromTypeId(ug->GetCellType(c))]++;
+  }
+  Out(text, "  points       %s\n", Grouped(ug->GetNumberOfPoints()).c_str());
+  Out(text, "  cells        %s\n", Grouped(ug->GetNumberOfCells()).c_str());
+  cli::Json jt;
+  for (const auto& [name, n] : types)
+  {
+    Out(text, "    %-12s %s\n", name.c_str(), Grouped(n).c_str());
+    jt.Set(name, n);
+  }
+  Out(text, "  bounds       %s\n", Bounds(ug).c_str());
+  Out(text, "  point data   %s\n", ArrayList(ug->GetPointData()).c_str());
+  Out(text, "  cell data    %s\n", ArrayList(ug->GetCellData()).c_str());
+  Out(text, "  field data   %s\n", ArrayList(ug->GetFieldData()).c_str());
+  j.Set("points", static_cast<long long>(ug->GetNumberOfPoints()))
+    .Set("cells", static_cast<long long>(ug->GetNumberOfCells()))
+    .Set("cell_types", jt);
+}
+
 cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind kind, std::string& text)
 {
   cli::Json j;
@@ -191,144 +344,15 @@ cli::Json Describe(const std::string& path, vtkDataObject* obj, art::DataKind ki
   Out(text, "%s: %s\n", path.c_str(), art::KindName(kind));
   if (auto* img = vtkImageData::SafeDownCast(obj))
   {
-    int d[3];
-    img->GetDimensions(d);
-    const double* sp = img->GetSpacing();
-    const double* o = img->GetOrigin();
-    vtkDataArray* s = img->GetPointData()->GetScalars();
-    // A vector's range is its magnitude's (as ParaView gives it): component 0's said nothing of it.
-    double r[2];
-    s->GetRange(r, s->GetNumberOfComponents() > 1 ? -1 : 0);
-    Out(text, "  dimensions   %d x %d x %d (%s voxels)\n", d[0], d[1], d[2],
-      Grouped(static_cast<long long>(d[0]) * d[1] * d[2]).c_str());
-    Out(text, "  spacing      %g x %g x %g\n", sp[0], sp[1], sp[2]);
-    Out(text, "  origin       %.10g, %.10g, %.10g\n", o[0], o[1], o[2]);
-    const double* dm = img->GetDirectionMatrix()->GetData();
-    if (!img->GetDirectionMatrix()->IsIdentity())
-    {
-      // The axes turned or mirrored: otherwise only the bounds would show it.
-      // + 0.0 prints -0 as 0.
-      Out(text, "  direction    [%g %g %g; %g %g %g; %g %g %g]\n", dm[0] + 0.0, dm[1] + 0.0, dm[2] + 0.0, dm[3] + 0.0,
-        dm[4] + 0.0, dm[5] + 0.0, dm[6] + 0.0, dm[7] + 0.0, dm[8] + 0.0);
-      j.Set("direction", std::vector<double>(dm, dm + 9));
-    }
-    Out(text, "  bounds       %s\n", Bounds(img).c_str());
-    Orientation(path, img, text, j);
-    Out(text, "  scalars      %s, %d component%s, %srange %s%s\n", s->GetDataTypeAsString(),
-      s->GetNumberOfComponents(), s->GetNumberOfComponents() > 1 ? "s" : "",
-      s->GetNumberOfComponents() > 1 ? "magnitude " : "", Range(r[0], r[1], " .. ").c_str(),
-      s->GetNumberOfComponents() > 1 ? (" (--array " + art::ComponentHint(s) + ")").c_str() : "");
-    // NaN voxels (a masked MRI map, a statistics volume) are left out of VTK's range: the range
-    // alone looked fine, and render and reduce then refused the volume.
-    const auto [nan, inf] = CountNonFinite(s);
-    if (nan + inf > 0)
-    {
-      Out(text, "  non-finite   %s NaN and %s infinite values (render and reduce need finite voxels: replace them first, e.g. with numpy.nan_to_num)\n",
-        Grouped(nan).c_str(), Grouped(inf).c_str());
-    }
-    j.Set("nan_values", nan).Set("infinite_values", inf);
-    // Values of 1e300 or 1e-310: render and reduce refuse them; say so where the range is shown.
-    if (s->GetNumberOfComponents() == 1 && std::isfinite(r[0]) && std::isfinite(r[1]))
-    {
-      try
-      {
-        art::RequireComputableRange(r[0], r[1], {});
-      }
-      catch (const art::Error& e)
-      {
-        Out(text, "  magnitude    %s\n", e.problem().c_str());
-        j.Set("magnitude_problem", e.problem());
-      }
-    }
-    Out(text, "  point data   %s%s\n", ArrayList(img->GetPointData()).c_str(),
-      img->GetPointData()->GetNumberOfArrays() > 1 ? " (--array picks one)" : "");
-    if (img->GetCellData()->GetNumberOfArrays() > 0)
-    {
-      Out(text, "  cell data    %s\n", ArrayList(img->GetCellData()).c_str());
-    }
-    std::vector<std::string> names;
-    for (int i = 0; i < img->GetPointData()->GetNumberOfArrays(); ++i)
-    {
-      const char* n = img->GetPointData()->GetArrayName(i);
-      names.push_back(n ? n : "");
-    }
-    j.Set("arrays", names).Set("scalars_name", s->GetName() ? s->GetName() : "");
-    if (auto* frame = vtkStringArray::SafeDownCast(img->GetFieldData()->GetAbstractArray("Frame")))
-    {
-      Out(text, "  frame        %s (--frame %s)\n", frame->GetValue(0).c_str(),
-        frame->GetValue(0) == "VTK reader" ? "vtk: as VTK's readers and ParaView place the voxels" : "patient: LPS patient coordinates");
-      j.Set("frame", frame->GetValue(0));
-    }
-    if (auto* m = vtkDoubleArray::SafeDownCast(img->GetFieldData()->GetArray("IndexToWorld")))
-    {
-      j.Set("index_to_world", std::vector<double>(m->GetPointer(0), m->GetPointer(0) + 16));
-    }
-    j.Set("dimensions", std::vector<double>{ double(d[0]), double(d[1]), double(d[2]) })
-      .Set("spacing", std::vector<double>(sp, sp + 3))
-      .Set("origin", std::vector<double>(o, o + 3))
-      .Set("scalar_type", s->GetDataTypeAsString())
-      .Set("components", s->GetNumberOfComponents())
-      .Set("range", std::vector<double>{ r[0], r[1] });
+    DescribeVolume(path, img, text, j);
   }
   else if (auto* pd = vtkPolyData::SafeDownCast(obj))
   {
-    long long tris = 0, other = 0, stripTris = 0;
-    vtkCellArray* polys = pd->GetPolys();
-    for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
-    {
-      (polys->GetCellSize(c) == 3 ? tris : other)++;
-    }
-    // A strip of n points holds n - 2 triangles (a .vtp of strips showed 0 triangles).
-    vtkCellArray* strips = pd->GetStrips();
-    for (vtkIdType c = 0; c < strips->GetNumberOfCells(); ++c)
-    {
-      stripTris += std::max<vtkIdType>(0, strips->GetCellSize(c) - 2);
-    }
-    Out(text, "  points       %s\n", Grouped(pd->GetNumberOfPoints()).c_str());
-    Out(text, "  polygons     %s (%s triangles, %s other)\n", Grouped(pd->GetNumberOfPolys()).c_str(),
-      Grouped(tris).c_str(), Grouped(other).c_str());
-    if (pd->GetNumberOfStrips())
-    {
-      Out(text, "  strips       %s (%s triangles)\n", Grouped(pd->GetNumberOfStrips()).c_str(), Grouped(stripTris).c_str());
-    }
-    Out(text, "  triangles    %s\n", Grouped(tris + stripTris).c_str());
-    if (pd->GetNumberOfLines() || pd->GetNumberOfVerts())
-    {
-      Out(text, "  also         %s lines, %s vertices\n", Grouped(pd->GetNumberOfLines()).c_str(),
-        Grouped(pd->GetNumberOfVerts()).c_str());
-    }
-    Out(text, "  bounds       %s\n", Bounds(pd).c_str());
-    Out(text, "  point data   %s\n", ArrayList(pd->GetPointData()).c_str());
-    Out(text, "  cell data    %s\n", ArrayList(pd->GetCellData()).c_str()); // face colours, labels
-    j.Set("points", static_cast<long long>(pd->GetNumberOfPoints()))
-      .Set("polygons", static_cast<long long>(pd->GetNumberOfPolys()))
-      .Set("triangles", tris + stripTris)
-      .Set("triangles_in_polygons", tris)
-      .Set("triangles_in_strips", stripTris)
-      .Set("strips", static_cast<long long>(pd->GetNumberOfStrips()));
+    DescribeSurface(pd, text, j);
   }
   else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(obj))
   {
-    std::map<std::string, long long> types;
-    for (vtkIdType c = 0; c < ug->GetNumberOfCells(); ++c)
-    {
-      types[vtkCellTypes::GetClassNameFromTypeId(ug->GetCellType(c))]++;
-    }
-    Out(text, "  points       %s\n", Grouped(ug->GetNumberOfPoints()).c_str());
-    Out(text, "  cells        %s\n", Grouped(ug->GetNumberOfCells()).c_str());
-    cli::Json jt;
-    for (const auto& [name, n] : types)
-    {
-      Out(text, "    %-12s %s\n", name.c_str(), Grouped(n).c_str());
-      jt.Set(name, n);
-    }
-    Out(text, "  bounds       %s\n", Bounds(ug).c_str());
-    Out(text, "  point data   %s\n", ArrayList(ug->GetPointData()).c_str());
-    Out(text, "  cell data    %s\n", ArrayList(ug->GetCellData()).c_str());
-    Out(text, "  field data   %s\n", ArrayList(ug->GetFieldData()).c_str());
-    j.Set("points", static_cast<long long>(ug->GetNumberOfPoints()))
-      .Set("cells", static_cast<long long>(ug->GetNumberOfCells()))
-      .Set("cell_types", jt);
+    DescribeMesh(ug, text, j);
   }
   return j;
 }
