@@ -27,6 +27,20 @@ public:
   /// portrait image keeps the data's sides (the vertical angle alone cut them off).
   static void Frame(vtkCamera* cam, const Box3& bounds, double azimuth = 0.0,
     double elevation = 0.0, double zoom = 1.0, double aspect = 1.0);
+  /// How FrameObject fits: the object's box as this view sees it, or (Orbit) a cylinder about the
+  /// view-up axis holding the box, so that every azimuth of an orbit gets the same distance.
+  enum class Fit
+  {
+    View,
+    Orbit
+  };
+  /// The fraction of the frame's narrower fitting side the object fills.
+  static constexpr double FitFraction = 0.85;
+  /// Frame, but fitted to `object` (the visible part of the data) to FitFraction of the frame,
+  /// its centre at the frame's centre; the eye is kept outside `data` (the whole box the casters
+  /// enter), narrowing the view angle instead when the fit would put it inside.
+  static void FrameObject(vtkCamera* cam, const Box3& object, const Box3& data, double azimuth = 0.0,
+    double elevation = 0.0, double zoom = 1.0, double aspect = 1.0, Fit fit = Fit::View);
   /// The default view direction of the CLI and the viewer, before Frame: from the front (-y), z
   /// up; flat data (thinner than 1/20 of its width in z, or in x) face on: from above with y up
   /// (ParaView's default view), or from the side. Edge on, a slab drew as a line or nothing.

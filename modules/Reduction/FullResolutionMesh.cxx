@@ -86,6 +86,7 @@ ReducedMesh FullResolutionMesh(const VoxelVolume& v)
   m.Range[0] = v.Range[0];
   m.Range[1] = v.Range[1];
   m.SourceSpacing = MeanVoxelSpacing(v.Dims, v.Spacing); // as TetReducer records it
+  m.Source = v.Statistics;
   m.TargetTets = nt;
   m.ScalarName = v.Name;
   return m;

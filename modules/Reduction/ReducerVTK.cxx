@@ -2,6 +2,7 @@
 
 #include "AvailableMemory.h"
 #include "Error.h"
+#include "SourceStatistics.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -223,6 +224,10 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bo
   field("scalar_range_min", m.Range[0]);
   field("scalar_range_max", m.Range[1]);
   field("source_spacing", m.SourceSpacing);
+  if (m.Source.samples > 0)
+  {
+    WriteSourceStatistics(fd, m.Source);
+  }
   return grid;
 }
 

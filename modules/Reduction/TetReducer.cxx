@@ -127,6 +127,7 @@ ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const st
   out.Range[0] = vol.Range[0];
   out.Range[1] = vol.Range[1];
   out.SourceSpacing = MeanVoxelSpacing(vol.Dims, vol.Spacing); // a preset's unit distance follows it
+  out.Source = vol.Statistics;
   out.ScalarName = vol.Name;
   return out;
 }

@@ -116,6 +116,7 @@ struct ReducedMesh
   bool Weighted = false;      ///< reduced with a scalar-opacity importance
   double Range[2] = { 0, 0 }; ///< scalar range of the input
   double SourceSpacing = 1;   ///< the input's geometric mean voxel spacing (over axes of > 1 voxel)
+  ScalarStatistics Source;    ///< the input's background, window and labels (VoxelVolume::Statistics)
   double BuildSeconds = 0;    ///< from the start of the run to this level
   long long TargetTets = 0;   ///< the budget this level stands for (0: an error target)
   double TargetError = -1;    ///< the error bound in data units (< 0: none)

@@ -34,6 +34,7 @@ void VoxelVolume::Validate(const std::string& file)
     throw Error("the scalar array does not match the image dimensions", file);
   }
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  bool whole = true;
   for (long long i = 0; i < n; ++i)
   {
     const double v = Value(i);
@@ -57,9 +58,11 @@ void VoxelVolume::Validate(const std::string& file)
     }
     lo = std::min(lo, v);
     hi = std::max(hi, v);
+    whole = whole && v == std::floor(v);
   }
   RequireComputableRange(lo, hi, file); // squares of 1e300 were inf: 'RMS inf' and a coarse mesh
   Range[0] = lo;
   Range[1] = hi;
+  WithSamples([&](const auto* v) { Statistics = Summarize(n, [v](long long i) { return double(v[i]); }, whole); });
 }
 } // namespace art

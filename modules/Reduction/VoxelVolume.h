@@ -3,6 +3,8 @@
 #ifndef art_VoxelVolume_h
 #define art_VoxelVolume_h
 
+#include "ScalarStatistics.h"
+
 #include <string>
 #include <vector>
 
@@ -20,6 +22,9 @@ struct VoxelVolume
   std::string Name = "scalars";
   std::string File; ///< where the samples came from, for errors (may be empty)
   double Range[2] = { 0, 0 };
+  /// Background, robust window and labels of the samples (Validate fills it), recorded in a
+  /// reduced mesh so that its default transfer function is the volume's.
+  ScalarStatistics Statistics;
 
   long long NumberOfVoxels() const { return static_cast<long long>(Dims[0]) * Dims[1] * Dims[2]; }
   double Value(long long i) const { return DoubleValues ? Double[i] : Float[i]; }
@@ -46,7 +51,7 @@ struct VoxelVolume
       w[r] = Origin[r] + Direction[3 * r] * s[0] + Direction[3 * r + 1] * s[1] + Direction[3 * r + 2] * s[2];
     }
   }
-  /// Fills Range from the samples; throws art::Error on an empty volume or a 2-D image.
+  /// Fills Range and Statistics from the samples; throws art::Error on an empty volume or a 2-D image.
   void Validate(const std::string& file = {});
 };
 } // namespace art

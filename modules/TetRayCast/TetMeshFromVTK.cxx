@@ -2,6 +2,7 @@
 // the tets of any vtkUnstructuredGrid (other cells tetrahedralised, cell data moved to points,
 // unused and duplicate points removed), with the checks that name the file.
 #include "TetMesh.h"
+#include "SourceStatistics.h"
 #include "ArrayChoice.h"
 #include "AvailableMemory.h"
 
@@ -307,8 +308,8 @@ std::size_t DropFlatTets(const std::vector<Vec3>& pts, std::vector<std::array<in
   return before - tets.size();
 }
 // The range of the volume a reducer's output approximates (its field data scalar_range_min/max),
-// when `scalars` still look like that reduction: their own range within a quarter of the volume's
-// from each end (the fit's overshoot); a filter that rescaled or thresholded them keeps its own.
+// when `scalars` still look like that reduction (StillTheSource: the fit's overshoot allowed); a
+// filter that rescaled or thresholded them keeps its own.
 bool SourceRange(vtkUnstructuredGrid* grid, vtkDataArray* scalars, double range[2])
 {
   vtkFieldData* fd = grid->GetFieldData();
@@ -320,11 +321,8 @@ bool SourceRange(vtkUnstructuredGrid* grid, vtkDataArray* scalars, double range[
   }
   range[0] = lo->GetComponent(0, 0);
   range[1] = hi->GetComponent(0, 0);
-  double own[2];
-  scalars->GetRange(own, 0);
-  const double slack = 0.25 * (range[1] - range[0]);
   return std::isfinite(range[0]) && std::isfinite(range[1]) && range[1] >= range[0] &&
-    std::fabs(own[0] - range[0]) <= slack && std::fabs(own[1] - range[1]) <= slack;
+    StillTheSource(range[0], range[1], scalars->GetNumberOfTuples(), [scalars](long long i) { return scalars->GetComponent(i, 0); });
 }
 
 // A vector (or other multi-component) array is one error naming how to choose a component.

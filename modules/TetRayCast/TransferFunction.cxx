@@ -1,4 +1,5 @@
 #include "TransferFunction.h"
+#include "DataTransferFunction.h"
 
 #include "TetMesh.h"
 
@@ -334,7 +335,18 @@ TransferFunction TransferFunction::PresetFor(const std::string& name, vtkDataSet
     hu = SamplesLookLikeCT(static_cast<long long>(a->GetNumberOfTuples()), type != VTK_FLOAT && type != VTK_DOUBLE,
       [&](long long i) { return a->GetComponent(i, 0); });
   }
-  return Make(name, lo, hi, UnitDistanceFor(hu, SampleSpacing(data, mesh)), hu);
+  const double unit = UnitDistanceFor(hu, SampleSpacing(data, mesh));
+  if (name == "auto" && !hu)
+  {
+    return DataTransferFunction(StatisticsFor(data, lo, hi, mesh), unit);
+  }
+  return Make(name, lo, hi, unit, hu);
+}
+
+TransferFunction TransferFunction::MaximumIntensityFor(vtkDataSet* data, double lo, double hi, const TetMesh* mesh)
+{
+  return DataTransferFunction(StatisticsFor(data, lo, hi, mesh), UnitDistanceFor(LooksLikeHU(lo, hi),
+    SampleSpacing(data, mesh)), TransferFunctionUse::MaximumIntensity);
 }
 
 TransferFunction TransferFunction::Preset(const std::string& name, double lo, double hi, double unitDistance)

@@ -44,7 +44,7 @@ public:
   /// "ct-skin-bone", "ct-bone", "grey-ramp", "constant" laid over the data range [lo, hi]
   /// (CT presets use Hounsfield units when the range looks like CT, else fractions of it), their
   /// opacities per unitDistance world units (PresetUnitDistance gives the data's). "auto" is
-  /// ct-skin-bone when the range looks like CT, else grey-ramp.
+  /// ct-skin-bone when the range looks like CT, else grey-ramp (PresetFor looks at the samples).
   static TransferFunction Preset(const std::string& name, double lo, double hi, double unitDistance = 1.0);
   static std::vector<std::string> PresetNames();
   /// Does the range [lo, hi] look like CT in Hounsfield units (air near -1000, bone above 500)?
@@ -67,8 +67,12 @@ public:
   /// A range that looks like CT counts as CT only when the samples drawn (the mesh's, or the
   /// data's active point scalars) are whole numbers or hold air (5% within 100 of -1000): a
   /// simulation field spanning -1000 .. 1000 gets the grey ramp and fractions of its range.
+  /// "auto" on data that is not CT is DataTransferFunction of its statistics (StatisticsFor).
   static TransferFunction PresetFor(const std::string& name, vtkDataSet* data, double lo, double hi,
     const TetMesh* mesh = nullptr);
+  /// The default under maximum intensity (CT included): white, its opacity linear over the robust
+  /// window of StatisticsFor(data, lo, hi, mesh), so the pixels span black to white.
+  static TransferFunction MaximumIntensityFor(vtkDataSet* data, double lo, double hi, const TetMesh* mesh = nullptr);
   /// A text file, one node per line: "scalar r g b opacity" ('#' comments; optional first line
   /// "unit-distance U"), or a ParaView preset as its "Export" writes it (JSON: "RGBPoints",
   /// "ColorSpace", "Points" for the opacity, else a ramp from 0 to 1 over the colour points).

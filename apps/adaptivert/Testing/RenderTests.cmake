@@ -47,9 +47,10 @@ art_expect_test(cli.render_flat_scene_from_above EXIT 0 STDOUT "\"covered_pixels
 art_expect_test(cli.render_camera_straight_above EXIT 0 STDOUT "\"covered_pixels\":432[,}]"
   ARGS render "${CMAKE_CURRENT_BINARY_DIR}/floor.obj" -o "${ART_TEST_OUTPUT}/floor-top.png" --size 32x32
   --camera-position 2,1.5,10 --focal-point 2,1.5,0 --json --quiet)
-# --zoom on a perspective view of a scene was undone by the view angle set after framing: 432
-# pixels at any zoom. At 0.5 the floor covers about a quarter of them.
-art_expect_test(cli.render_surface_zoom EXIT 0 STDOUT "\"covered_pixels\":96[,}]"
+# --zoom on a perspective view of a scene was undone by the view angle set after framing: the
+# same pixels at any zoom. The default frame fits the floor to 85% of the image (560 pixels); at
+# 0.5 it covers about a quarter of them.
+art_expect_test(cli.render_surface_zoom EXIT 0 STDOUT "\"covered_pixels\":120[,}]"
   ARGS render "${CMAKE_CURRENT_BINARY_DIR}/floor.obj" -o "${ART_TEST_OUTPUT}/floor-zoom.png" --size 32x32
   --zoom 0.5 --json --quiet)
 art_expect_test(cli.render_surface_zoom_camera_position EXIT 0 STDOUT "\"covered_pixels\":96[,}]"
@@ -95,9 +96,9 @@ art_render_baseline_test(cli.render_tets_ct_head BASELINE tets-ct-head-160.png M
   ARGS "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" --size 160x160 --azimuth 30 --elevation 10 --no-error)
 art_expect_test(cli.render_tets_bad_integrator EXIT 2 STDERR "--integrator expects exact or trapezoid" ONE_LINE_STDERR
   ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --integrator simpson)
-# --clip cuts the mesh's rays and the voxel reference's alike (26.6 dB on this cutaway of two planes; 23.3 dB with one, 10.9 dB
-# with the reference left whole); a plane past the head leaves nothing; a bad plane is refused.
-art_expect_test(cli.render_tets_clip EXIT 0 STDOUT "error        PSNR 2[5-7]\\.[0-9]+ dB"
+# --clip cuts the mesh's rays and the voxel reference's alike (24.0 dB on this cutaway of two planes, framed to the
+# head; 10.9 dB with the reference left whole); a plane past the head leaves nothing; a bad plane is refused.
+art_expect_test(cli.render_tets_clip EXIT 0 STDOUT "error        PSNR 2[3-6]\\.[0-9]+ dB"
   ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/clip.png" --size 64x64 --tets 3000 --plain-reduction
   --no-relocate "--clip=122,122,80,-1,0,0;0,0,60,0,0,1")
 art_expect_test(cli.render_tets_clip_all EXIT 0 STDOUT "ERT 0.99: .* 0.0 tets/ray"
@@ -261,3 +262,20 @@ art_expect_test(cli.render_zoom_hexadecimal EXIT 2 STDERR "option '--zoom' expec
   ONE_LINE_STDERR ARGS render "${_ct}" -o "${ART_TEST_OUTPUT}/never.png" --zoom 0x2)
 art_expect_test(cli.render_frame_on_surface EXIT 2 STDERR "--frame does not apply to a surface"
   ONE_LINE_STDERR ARGS render "${CMAKE_SOURCE_DIR}/data/am_underworks.ply" -o "${ART_TEST_OUTPUT}/never.png" --frame vtk)
+
+# Default transfer functions from the data (tests/data/make_synthetic_volumes.py): an MRI-like heart
+# (noisy background clear, blood pools bright), a skull-stripped-brain-like volume, a label map in
+# categorical colours, and MIP over the heart's robust window; each framed to its visible part.
+# Thresholds as the other baselines: PSNR >= 40 dB, SSIM >= 0.98.
+set(_synthetic "${CMAKE_SOURCE_DIR}/tests/data/synthetic")
+foreach(_case heart-like brain-like labels)
+  art_render_baseline_test(image.default_tf_${_case} BASELINE default-tf-${_case}.png MIN_PSNR 40 MIN_SSIM 0.98
+    ARGS "${_synthetic}/${_case}.vti" --size 120x120 --azimuth 30 --no-error)
+endforeach()
+art_render_baseline_test(image.default_tf_mip BASELINE default-tf-heart-mip.png MIN_PSNR 40 MIN_SSIM 0.98
+  ARGS "${_synthetic}/heart-like.vti" --size 120x120 --mip --no-error)
+add_test(NAME cli.render_mesh_default_tf_as_volume COMMAND ${CMAKE_COMMAND} "-DART=$<TARGET_FILE:adaptivert>"
+  "-DDATA=${_synthetic}/heart-like.vti" "-DOUT=${ART_TEST_OUTPUT}/mesh-default-tf"
+  -P "${CMAKE_CURRENT_LIST_DIR}/mesh_default_tf_check.cmake")
+art_expect_test(cli.render_bad_fit EXIT 2 STDERR "--fit expects view or orbit, got 'tight'" ONE_LINE_STDERR
+  ARGS render "${_synthetic}/labels.vti" -o "${ART_TEST_OUTPUT}/never.png" --fit tight)

@@ -348,7 +348,7 @@ BatchJob LoadBatchJob(const std::string& path)
       {
         const std::vector<std::string> view = { "--size", size, "--azimuth",
           std::to_string(cams[c].azimuth), "--elevation", std::to_string(cams[c].elevation),
-          "--zoom", std::to_string(cams[c].zoom) };
+          "--zoom", std::to_string(cams[c].zoom), "--fit", cams.size() > 1 ? "orbit" : "view" }; // one distance for every view
         const std::string camName = stem + "_c" + Num("%03d", static_cast<int>(c));
         std::string refName;
         if (withReference)

@@ -11,6 +11,7 @@
 #include "MeshQuality.h"
 #include "Progress.h"
 #include "cli/ProgressBar.h"
+#include "rendering/DefaultFrame.h"
 #include "rendering/ReductionTargets.h"
 #include "rendering/TransferFunctionChoice.h"
 #include "ReducerVTK.h"
@@ -123,7 +124,9 @@ art::ReducerOptions OptionsBeforeLoading(const cli::Options& o)
 }
 
 // --tf's opacity as the fit's weights.
-void WeightByTransferFunction(const cli::Options& o, const art::VoxelVolume& volume, art::ReducerOptions& opt)
+// `image`: the samples, for a preset ("auto" looks at them, as render does).
+void WeightByTransferFunction(
+  const cli::Options& o, vtkImageData* image, const art::VoxelVolume& volume, art::ReducerOptions& opt)
 {
   if (!o.Has("tf"))
   {
@@ -133,9 +136,10 @@ void WeightByTransferFunction(const cli::Options& o, const art::VoxelVolume& vol
   const std::string tf = o.Get("tf");
   const art::TransferFunction f = art::TransferFunction::NamesFile(tf)
     ? art::TransferFunction::FromFile(tf)
-    : art::TransferFunction::Preset(tf, volume.Range[0], volume.Range[1]);
+    : art::TransferFunction::PresetFor(tf, image, volume.Range[0], volume.Range[1]);
   opt.ScalarOpacity = f.OpacityPoints();
 #else
+  (void)image;
   (void)volume;
   (void)opt;
   throw cli::UsageError("--tf needs the TetRayCast module (transfer functions), which is not in this build");
@@ -209,7 +213,8 @@ std::vector<art::ReducedMesh> Reduce(
 
 // Writes each mesh (levels as OUT_<tets>.vtu, the last as OUT.vtu), once every one has passed its
 // conformity check: a failed check must not have replaced an existing OUT.vtu already.
-// `placement`: the volume's field data, whose IndexToWorld and Frame each mesh takes.
+// `placement`: the volume's field data, whose IndexToWorld, Frame and source_visible_bounds each
+// mesh takes.
 std::vector<cli::Json> WriteMeshes(const std::vector<art::ReducedMesh>& meshes, const std::string& outPath,
   const art::VoxelVolume& volume, const art::ReducerOptions& opt, bool json, vtkFieldData* placement)
 {
@@ -234,7 +239,7 @@ std::vector<cli::Json> WriteMeshes(const std::vector<art::ReducedMesh>& meshes, 
                                         std::to_string(m.TargetTets > 0 ? m.TargetTets : m.NumberOfTets()) + ".vtu")).string();
     auto grid = art::ToUnstructuredGrid(m, volume.DoubleValues);
     // The volume's placement goes with the mesh (its points are in that frame).
-    for (const char* name : { "IndexToWorld", "Frame" })
+    for (const char* name : { "IndexToWorld", "Frame", "source_visible_bounds" })
     {
       if (vtkAbstractArray* a = placement ? placement->GetAbstractArray(name) : nullptr)
       {
@@ -320,7 +325,7 @@ int Run(const cli::Options& o)
   auto image = art::LoadVolume(in, cli::LoadOptionsFrom(o));
   art::RequireOneComponent(image, in);
   const art::VoxelVolume volume = art::VolumeFromImage(image, in);
-  WeightByTransferFunction(o, volume, opt);
+  WeightByTransferFunction(o, image, volume, opt);
   SetBudgets(o, volume.NumberOfVoxels(), opt);
   const std::string note = opt.TargetTets > 0 ? cli::CapToFullResolution(opt.TargetTets, volume, "--tets") : "";
   if (!note.empty() && !o.Flag("json"))
@@ -335,6 +340,10 @@ int Run(const cli::Options& o)
   if (meshes.empty())
   {
     throw art::Error("the reduction produced no mesh", in);
+  }
+  if (auto frame = cli::SourceVisibleBounds(image)) // so the mesh's default view is the volume's
+  {
+    image->GetFieldData()->AddArray(frame);
   }
   const std::vector<cli::Json> levels =
     WriteMeshes(meshes, outPath, volume, opt, o.Flag("json"), image->GetFieldData());

@@ -94,14 +94,21 @@ double Roll(const Options& o)
   return roll;
 }
 
-void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam)
+void SetupCamera(const Options& o, const art::Box3& object, const art::Box3& bounds, vtkCamera* cam,
+  double defaultElevation)
 {
+  const std::string fit = o.Get("fit").empty() ? "view" : o.Get("fit");
+  if (fit != "view" && fit != "orbit")
+  {
+    throw UsageError("--fit expects view or orbit, got '" + fit + "'");
+  }
   art::Camera::DefaultView(cam, bounds);
   ApplyViewUp(o, cam);
   cam->SetParallelProjection(o.Flag("parallel"));
   const View view = ViewFromOptions(o);
-  art::Camera::Frame(cam, bounds, o.GetDouble("azimuth"), o.GetDouble("elevation"), Zoom(o),
-    double(view.width) / double(view.height));
+  const double elevation = o.Has("elevation") ? o.GetDouble("elevation") : defaultElevation;
+  art::Camera::FrameObject(cam, object, bounds, o.GetDouble("azimuth"), elevation, Zoom(o),
+    double(view.width) / double(view.height), fit == "orbit" ? art::Camera::Fit::Orbit : art::Camera::Fit::View);
   cam->Roll(Roll(o));
 }
 
@@ -169,6 +176,8 @@ void Declare(cli::Options& o)
     "or +y for data flat in z)");
   o.Add("roll", 0, "DEG", "turn the image about the view direction, after --azimuth and --elevation", "0");
   o.Add("parallel", 0, "", "parallel instead of perspective projection");
+  o.Add("fit", 0, "view|orbit", "frame the visible object to 85% of the image as this view sees it, or (orbit) "
+    "at one distance for every azimuth, as batch orbits need", "view");
   o.Add("background", 0, "R,G,B", "background colour", "0,0,0");
   for (const auto& r : cli::Renderers())
   {

@@ -4,6 +4,7 @@
 #include "DataLoader.h"
 #include "Error.h"
 #include "ReducerVTK.h"
+#include "SourceStatistics.h"
 #include "cli/Subprocess.h"
 
 #include <vtkCellData.h>
@@ -139,6 +140,7 @@ bool FromGrid(vtkUnstructuredGrid* g, art::ReducedMesh& m)
   m.Range[0] = Field(fd, "scalar_range_min");
   m.Range[1] = Field(fd, "scalar_range_max");
   m.SourceSpacing = Field(fd, "source_spacing", 1.0);
+  art::ReadSourceStatistics(fd, m.Source);
   m.BuildSeconds = Field(fd, "build_seconds");
   m.TargetTets = static_cast<long long>(Field(fd, "target_tets"));
   m.TargetError = Field(fd, "target_error", -1.0);

@@ -45,10 +45,13 @@ struct View
   float background[3] = { 0.f, 0.f, 0.f };
 };
 View ViewFromOptions(const Options& o);
-/// Frames `bounds` with the shared camera options. The default view looks along +y with +z up
-/// (the anterior view of a scan in patient coordinates), which also suits most scenes;
-/// --view-up replaces the up direction, --roll turns the image last.
-void SetupCamera(const Options& o, const art::Box3& bounds, vtkCamera* cam);
+/// Frames `object` (the visible part of data within `bounds`) with the shared camera options
+/// (art::Camera::FrameObject; --fit). The default view looks along +y with +z up (the anterior
+/// view of a scan in patient coordinates), which also suits most scenes; --view-up replaces the
+/// up direction, --roll turns the image last; `defaultElevation` stands in for --elevation when it
+/// is not given.
+void SetupCamera(const Options& o, const art::Box3& object, const art::Box3& bounds, vtkCamera* cam,
+  double defaultElevation = 0.0);
 /// --view-up applied to `cam` (kept square to its view direction); nothing without it.
 void ApplyViewUp(const Options& o, vtkCamera* cam);
 /// --roll in degrees.

@@ -10,6 +10,7 @@
 #include "ImageMetrics.h"
 #include "cli/Json.h"
 #include "cli/LoadOptions.h"
+#include "rendering/DefaultFrame.h"
 #include "rendering/MeshCache.h"
 #include "ParallelTiles.h"
 #include "cli/ProgressBar.h"
@@ -20,6 +21,7 @@
 #include "TetMesh.h"
 #include "TetRayCaster.h"
 #include "TransferFunction.h"
+#include "VisibleBounds.h"
 #include "VoxelReferenceCaster.h"
 
 #ifdef ART_HAVE_Reduction
@@ -57,7 +59,8 @@ void Declare(cli::Options& o)
   o.Add("array", 0, "NAME", "point (or cell) array to render (default: the active scalars, else the first one-component array); NAME:magnitude or "
     "NAME:N for a vector's magnitude or component N");
   o.Add("tf", 0, "NAME|FILE",
-    "transfer function: a preset (auto = ct-skin-bone on CT in Hounsfield units, else grey-ramp; ct-skin-bone, "
+    "transfer function: a preset (auto = ct-skin-bone on CT in Hounsfield units, else from the data: background "
+    "clear, a grey ramp over its 1st-99.5th percentiles, labels in distinct colours; under --mip a window; ct-skin-bone, "
     "ct-bone, grey-ramp, constant) or a file of 'scalar r g b opacity' lines, or a ParaView preset exported as .json",
     "auto");
   o.Add("unit-distance", 0, "U",
@@ -132,6 +135,10 @@ art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo,
   if (art::TransferFunction::NamesFile(tf))
   {
     f = art::TransferFunction::FromFile(tf);
+  }
+  else if (tf == "auto" && o.Flag("mip"))
+  {
+    f = art::TransferFunction::MaximumIntensityFor(data, lo, hi, mesh);
   }
   else
   {
@@ -233,6 +240,7 @@ art::RenderSettings MakeSettings(const cli::Options& o, art::TransferFunction tf
 struct Scene
 {
   vtkSmartPointer<vtkImageData> volume; ///< null for a mesh input
+  vtkSmartPointer<vtkUnstructuredGrid> grid; ///< a mesh input as read (its field data)
   art::TetMesh mesh;
   std::string meshLabel, note;
   double range[2] = { 0, 1 };
@@ -330,7 +338,12 @@ void ReduceVolume(const cli::Options& o, const std::string& input, Scene& sc, ar
   sc.mesh = cli::ToTetMesh(r);
   if (o.Has("save-mesh"))
   {
-    art::SaveMesh(art::ToUnstructuredGrid(r, vv.DoubleValues), o.Get("save-mesh"));
+    auto grid = art::ToUnstructuredGrid(r, vv.DoubleValues);
+    if (auto frame = cli::SourceVisibleBounds(sc.volume))
+    {
+      grid->GetFieldData()->AddArray(frame);
+    }
+    art::SaveMesh(grid, o.Get("save-mesh"));
     j.Set("saved_mesh", o.Get("save-mesh"));
   }
   std::ostringstream ss;
@@ -418,6 +431,7 @@ void MakeVolumeTets(const cli::Options& o, const std::string& input, Scene& sc, 
 void LoadMeshScene(const cli::Options& o, const std::string& input, Scene& sc)
 {
   auto grid = art::LoadMesh(input);
+  sc.grid = grid;
   const std::string array = art::AddComponentArray(grid, o.Get("array"), input); // NAME:magnitude, NAME:N
   sc.mesh = art::TetMesh::FromVTK(grid, array, &sc.note, input);
   sc.meshLabel = "tet mesh";
@@ -642,8 +656,9 @@ int Run(const cli::Options& o, const std::string& input)
     LoadMeshScene(o, input, sc);
     bounds = sc.mesh.Bounds();
   }
+  const art::Box3 object = cli::ObjectBounds(sc.volume, sc.grid, &sc.mesh, sc.settings, o.Get("tf"));
   vtkNew<vtkCamera> vcam;
-  cli::SetupCamera(o, bounds, vcam);
+  cli::SetupCamera(o, object, bounds, vcam);
   const art::Camera cam = art::Camera::FromVTK(vcam, view.width, view.height);
   if (sc.volume)
   {

@@ -1,6 +1,7 @@
 // Transfer-function presets on data: the unit distance follows the sample spacing of volumes and
 // meshes, and 'auto' tells a CT in Hounsfield units from a signed field.
 #include "MeanSpacing.h"
+#include "DataTransferFunction.h"
 #include "MeshFixtures.h"
 #include "TetRayCaster.h"
 
@@ -86,7 +87,7 @@ TEST(TransferFunction, PresetScalesWithTheSampleSpacing)
 }
 
 // "auto" on a range that looks like Hounsfield units: a float simulation field of -997 .. 997 (no
-// whole values, 0.8% near -1000) gets the grey ramp, not CT colours; the same values rounded to
+// whole values, 0.8% near -1000) gets its own grey ramp (DataTransferFunction), not CT colours; the same values rounded to
 // whole numbers (as a scanner stores them), or with a tenth of the samples at air, count as CT.
 TEST(TransferFunction, AutoTellsCTFromASignedField)
 {
@@ -112,7 +113,13 @@ TEST(TransferFunction, AutoTellsCTFromASignedField)
     const double* r = v->GetPointData()->GetScalars()->GetRange();
     ASSERT_TRUE(TransferFunction::LooksLikeHU(r[0], r[1]));
     const auto tf = TransferFunction::PresetFor("auto", v, r[0], r[1]);
-    EXPECT_EQ(tf.Nodes().size(), k == 0 ? 2u : 8u) << "case " << k; // grey-ramp has 2 nodes, ct-skin-bone 8
+    // ct-skin-bone has 8 nodes; the data's own function is clear at the field's bottom end.
+    EXPECT_EQ(tf.Nodes().size() == 8u, k != 0) << "case " << k;
+    if (k == 0)
+    {
+      EXPECT_NEAR(tf.Alpha(r[1]), DataRampOpacity, 1e-9) << "the field's own ramp";
+      EXPECT_TRUE(tf.Transparent(r[0], r[0]));
+    }
   }
 }
 
