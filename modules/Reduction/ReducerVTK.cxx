@@ -138,7 +138,7 @@ VoxelVolume VolumeFromImage(vtkImageData* image, const std::string& file)
   return v;
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bool doubleValues)
+vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bool doubleValues, const QualityReport* quality)
 {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   const vtkIdType nv = m.NumberOfVertices(), nt = m.NumberOfTets();
@@ -217,7 +217,7 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bo
   field("target_tets", static_cast<double>(m.TargetTets));
   field("target_error", m.TargetError);
   field("target_reached", m.TargetReached ? 1.0 : 0.0);
-  const QualityReport q = MeasureQuality(m.Points.data(), nv, m.Tets.data(), nt);
+  const QualityReport q = quality ? *quality : MeasureQuality(m.Points.data(), nv, m.Tets.data(), nt);
   field("min_dihedral_degrees", q.MinDihedralDegrees);
   field("min_radius_ratio", q.MinRadiusRatio);
   field("mean_radius_ratio", q.MeanRadiusRatio);

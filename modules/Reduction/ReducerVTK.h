@@ -22,9 +22,10 @@ namespace art
 /// for an empty or 2-D image, several components, no scalars, or NaN values.
 ADAPTIVERTREDUCTION_EXPORT VoxelVolume VolumeFromImage(vtkImageData* image, const std::string& file = {});
 
-/// The output grid; `doubleValues` selects double rather than float point scalars.
+/// The output grid; `doubleValues` selects double rather than float point scalars. `quality`:
+/// MeasureQuality of `mesh` when already known (it takes a while on tens of millions of tets).
 ADAPTIVERTREDUCTION_EXPORT vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(
-  const ReducedMesh& mesh, bool doubleValues = false);
+  const ReducedMesh& mesh, bool doubleValues = false, const QualityReport* quality = nullptr);
 
 /// MeasureQuality on a grid of VTK_TETRA cells (other cell types are counted as inverted).
 ADAPTIVERTREDUCTION_EXPORT QualityReport MeasureQuality(vtkUnstructuredGrid* grid);

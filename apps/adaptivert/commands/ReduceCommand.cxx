@@ -216,16 +216,20 @@ std::vector<art::ReducedMesh> Reduce(
 // `placement`: the volume's field data, whose IndexToWorld, Frame and source_visible_bounds each
 // mesh takes.
 std::vector<cli::Json> WriteMeshes(const std::vector<art::ReducedMesh>& meshes, const std::string& outPath,
-  const art::VoxelVolume& volume, const art::ReducerOptions& opt, bool json, vtkFieldData* placement)
+  const art::VoxelVolume& volume, const art::ReducerOptions& opt, bool json, vtkFieldData* placement,
+  art::QualityReport& finalQuality)
 {
+  std::vector<art::QualityReport> quality;
   for (const auto& m : meshes)
   {
-    const auto mq = art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets());
+    const auto& mq = quality.emplace_back(
+      art::MeasureQuality(m.Points.data(), m.NumberOfVertices(), m.Tets.data(), m.NumberOfTets()));
     if (!mq.Valid())
     {
       throw art::Error("internal: a reduced mesh failed its conformity check: " + mq.Summary(), outPath);
     }
   }
+  finalQuality = quality.back();
   const double range = volume.Range[1] - volume.Range[0];
   const double pct = range > 0 ? 100.0 / range : 0.0;
   const std::filesystem::path op(outPath);
@@ -237,7 +241,7 @@ std::vector<cli::Json> WriteMeshes(const std::vector<art::ReducedMesh>& meshes, 
     const std::string file = last ? outPath
                                   : (op.parent_path() / (op.stem().string() + "_" +
                                         std::to_string(m.TargetTets > 0 ? m.TargetTets : m.NumberOfTets()) + ".vtu")).string();
-    auto grid = art::ToUnstructuredGrid(m, volume.DoubleValues);
+    auto grid = art::ToUnstructuredGrid(m, volume.DoubleValues, &quality[i]);
     // The volume's placement goes with the mesh (its points are in that frame).
     for (const char* name : { "IndexToWorld", "Frame", "source_visible_bounds" })
     {
@@ -270,10 +274,9 @@ std::vector<cli::Json> WriteMeshes(const std::vector<art::ReducedMesh>& meshes, 
 
 void PrintSummary(const cli::Options& o, const std::string& in, const std::string& outPath,
   const art::VoxelVolume& volume, const std::vector<art::ReducedMesh>& meshes, const std::vector<cli::Json>& levels,
-  const std::vector<long long>& missing, const std::string& note)
+  const std::vector<long long>& missing, const std::string& note, const art::QualityReport& q)
 {
   const auto& f = meshes.back();
-  const auto q = art::MeasureQuality(f.Points.data(), f.NumberOfVertices(), f.Tets.data(), f.NumberOfTets());
   const long long voxels = volume.NumberOfVoxels();
   const double range = volume.Range[1] - volume.Range[0];
   const double pct = range > 0 ? 100.0 / range : 0.0;
@@ -345,8 +348,9 @@ int Run(const cli::Options& o)
   {
     image->GetFieldData()->AddArray(frame);
   }
+  art::QualityReport quality;
   const std::vector<cli::Json> levels =
-    WriteMeshes(meshes, outPath, volume, opt, o.Flag("json"), image->GetFieldData());
+    WriteMeshes(meshes, outPath, volume, opt, o.Flag("json"), image->GetFieldData(), quality);
   // With --max-error the run may stop before a level's budget: say which files were not written.
   const std::vector<long long> missing = art::UnreachedLevels(opt.Levels, meshes);
   for (long long b : missing)
@@ -354,7 +358,7 @@ int Run(const cli::Options& o)
     std::fprintf(stderr, "adaptivert: %s: level %lld not written: the reduction stopped at %lld tets\n",
       outPath.c_str(), b, static_cast<long long>(meshes.back().NumberOfTets()));
   }
-  PrintSummary(o, in, outPath, volume, meshes, levels, missing, note);
+  PrintSummary(o, in, outPath, volume, meshes, levels, missing, note, quality);
   return cli::ExitOk;
 }
 
