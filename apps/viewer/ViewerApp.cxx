@@ -274,7 +274,10 @@ void ViewerApp::Internals::ResetCamera()
   vtkCamera* cam = Ren->GetActiveCamera();
   art::Camera::DefaultView(cam, Scene.Bounds); // the CLI's, flat data face on
   const int* size = Window->GetSize();
-  art::Camera::Frame(cam, Scene.Bounds, 0.0, 0.0, 1.0, size[1] > 0 ? double(size[0]) / double(size[1]) : 1.0);
+  // As `adaptivert render` frames it: the visible part to 85%; a flat, wide scene from above.
+  const bool layout = Scene.Surface && art::Camera::LayoutView(Scene.Bounds);
+  art::Camera::FrameObject(cam, Scene.Object, Scene.Bounds, 0.0, layout ? art::Camera::LayoutElevation : 0.0, 1.0,
+    size[1] > 0 ? double(size[0]) / double(size[1]) : 1.0);
   double b[6] = { Scene.Bounds.lo.x, Scene.Bounds.hi.x, Scene.Bounds.lo.y, Scene.Bounds.hi.y, Scene.Bounds.lo.z,
     Scene.Bounds.hi.z };
   Ren->ResetCameraClippingRange(b);

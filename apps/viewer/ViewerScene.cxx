@@ -1,5 +1,8 @@
 #include "ViewerScene.h"
 
+#include "TetRayCaster.h"
+#include "VisibleBounds.h"
+
 #include "DataLoader.h"
 #include "Error.h"
 #include "TetMesh.h"
@@ -62,7 +65,7 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const art:
   {
     auto* pd = vtkPolyData::SafeDownCast(data);
     s.Surface = std::make_unique<SurfaceTraceView>(pd, file);
-    s.Bounds = s.Surface->Bounds();
+    s.Bounds = s.Object = s.Surface->Bounds();
     s.Note = s.Surface->Description();
     return s;
   }
@@ -104,6 +107,9 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const art:
   s.Transfer = tf.find_first_of("./") != std::string::npos
     ? art::TransferFunction::FromFile(tf)
     : art::TransferFunction::PresetFor(tf, vtkDataSet::SafeDownCast(data), s.Range[0], s.Range[1], mesh ? &*mesh : nullptr);
+  art::RenderSettings shown;
+  shown.tf = s.Transfer;
+  s.Object = s.Image ? art::VisibleBounds(s.Image, shown) : art::VisibleBounds(*mesh, shown);
   return s;
 }
 } // namespace view

@@ -28,6 +28,7 @@ struct ViewerScene
   std::unique_ptr<SurfaceTraceView> Surface;                ///< a triangle scene
   art::TransferFunction Transfer;
   art::Box3 Bounds;
+  art::Box3 Object; ///< what the default camera frames: the part the transfer function shows
   double Range[2] = { 0, 1 };
   std::string Note; ///< one line about the data, for the status text
   /// The array shown, as the levels' grids name it ("velocity:magnitude" for --array

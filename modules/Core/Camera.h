@@ -41,6 +41,17 @@ public:
   /// enter), narrowing the view angle instead when the fit would put it inside.
   static void FrameObject(vtkCamera* cam, const Box3& object, const Box3& data, double azimuth = 0.0,
     double elevation = 0.0, double zoom = 1.0, double aspect = 1.0, Fit fit = Fit::View);
+  /// Degrees above the horizon the default view of a flat, wide triangle scene (a game level, a
+  /// terrain, a floor plan; LayoutView) is raised by: from the front it is a thin strip.
+  static constexpr double LayoutElevation = 45.0;
+  /// Is a scene of `bounds` flat and wide: lower than 0.6 of its width, yet not flat in z
+  /// (which DefaultView already sees from above)?
+  static bool LayoutView(const Box3& bounds)
+  {
+    const Vec3 e = bounds.Size();
+    const double wide = e.x > e.y ? e.x : e.y;
+    return e.z < 0.6 * wide && e.z >= 0.05 * wide;
+  }
   /// The default view direction of the CLI and the viewer, before Frame: from the front (-y), z
   /// up; flat data (thinner than 1/20 of its width in z, or in x) face on: from above with y up
   /// (ParaView's default view), or from the side. Edge on, a slab drew as a line or nothing.

@@ -109,9 +109,6 @@ std::unique_ptr<art::Accelerator> BuildAccelerator(const cli::Options& o, const 
   return art::MakeAccelerator(sc.store, ao);
 }
 
-// Degrees above the horizon a flat, wide scene is seen from by default.
-constexpr double LayoutElevation = 45.0;
-
 // The scene framed as any render frames it, or placed with --camera-position / --focal-point
 // (z up, as game levels and terrains have it).
 void SetupSurfaceCamera(const cli::Options& o, const art::Box3& bounds, const art::Vec3& shift, vtkCamera* vcam)
@@ -125,11 +122,8 @@ void SetupSurfaceCamera(const cli::Options& o, const art::Box3& bounds, const ar
   vcam->SetViewAngle(angle);
   if (!o.Has("camera-position"))
   {
-    // A flat, wide scene (a game level, a terrain, a floor plan) from the front is a thin strip:
-    // from above at an angle it shows its layout.
-    const art::Vec3 e = bounds.Size();
-    const bool flatWide = e.z < 0.6 * std::max(e.x, e.y) && e.z > 0.05 * std::max(e.x, e.y);
-    cli::SetupCamera(o, bounds, bounds, vcam, flatWide ? LayoutElevation : 0.0);
+    // A flat, wide scene from above at an angle, which shows its layout.
+    cli::SetupCamera(o, bounds, bounds, vcam, art::Camera::LayoutView(bounds) ? art::Camera::LayoutElevation : 0.0);
     return;
   }
   const double zoom = cli::Zoom(o), azimuth = o.GetDouble("azimuth"), elevation = o.GetDouble("elevation");
