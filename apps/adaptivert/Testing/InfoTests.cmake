@@ -147,3 +147,10 @@ art_expect_test(cli.info_metaio_quiet EXIT 1 STDERR "mha-spacing-before-ndims.mh
   ONE_LINE_STDERR ARGS info "${CMAKE_SOURCE_DIR}/tests/data/corpus/mha-spacing-before-ndims.mha")
 art_expect_test(cli.info_far_vertex EXIT 1 STDERR "vtu-far-vertex.vtu: a cell refers to point 1000000000 of 27"
   ONE_LINE_STDERR ARGS info "${CMAKE_SOURCE_DIR}/tests/data/corpus/vtu-far-vertex.vtu")
+# What the default transfer function is made from: a label map's labels, an MRI-like volume's
+# background and window (tests/data/make_synthetic_volumes.py).
+art_expect_test(cli.info_statistics_labels EXIT 0 STDOUT "statistics   window .*; labels: 0 1 2 3"
+  ARGS info "${CMAKE_SOURCE_DIR}/tests/data/synthetic/labels.vti")
+art_expect_test(cli.info_statistics_background EXIT 0
+  STDOUT "statistics   window 9[0-9]\\.[0-9]+ \\.\\. 21[0-9]\\.[0-9]+ \\(1st-99\\.5th percentile above the background 0 \\.\\. [0-9.]+\\)"
+  ARGS info "${CMAKE_SOURCE_DIR}/tests/data/synthetic/heart-like.vti")

@@ -6,6 +6,7 @@
 #include "Error.h"
 #include "ValueMagnitude.h"
 #include "cli/Json.h"
+#include "SourceStatistics.h"
 #include "cli/LoadOptions.h"
 #include "VolumePlacement.h"
 
@@ -208,6 +209,34 @@ void DescribeScalarProblems(vtkDataArray* s, const double r[2], std::string& tex
 }
 
 // A volume: its grid, placement, scalars (their problems: NaN, magnitudes past double), arrays.
+// What the default transfer function is made from (art::ScalarStatistics): the background it
+// leaves clear, the window its ramp spans, the labels it colours.
+void DescribeStatistics(const art::ScalarStatistics& st, std::string& text, cli::Json& j)
+{
+  std::string line = "window " + Range(st.windowLow, st.windowHigh, " .. ") + " (1st-99.5th percentile";
+  line += st.hasBackground ? " above the background " + Range(st.lo, st.backgroundTop, " .. ") + ")" : ", no background)";
+  if (st.labels)
+  {
+    line += "; labels:";
+    for (double v : st.labelValues)
+    {
+      char one[32];
+      std::snprintf(one, sizeof one, " %g", v);
+      line += one;
+    }
+  }
+  Out(text, "  statistics   %s\n", line.c_str());
+  j.Set("window", std::vector<double>{ st.windowLow, st.windowHigh });
+  if (st.hasBackground)
+  {
+    j.Set("background_top", st.backgroundTop);
+  }
+  if (st.labels)
+  {
+    j.Set("labels", st.labelValues);
+  }
+}
+
 void DescribeVolume(const std::string& path, vtkImageData* img, std::string& text, cli::Json& j)
 {
   int d[3];
@@ -238,6 +267,10 @@ void DescribeVolume(const std::string& path, vtkImageData* img, std::string& tex
     s->GetNumberOfComponents() > 1 ? "magnitude " : "", Range(r[0], r[1], " .. ").c_str(),
     s->GetNumberOfComponents() > 1 ? (" (--array " + art::ComponentHint(s) + ")").c_str() : "");
   DescribeScalarProblems(s, r, text, j);
+  if (s->GetNumberOfComponents() == 1 && std::isfinite(r[0]) && std::isfinite(r[1]))
+  {
+    DescribeStatistics(art::SummarizeArray(s), text, j);
+  }
   Out(text, "  point data   %s%s\n", ArrayList(img->GetPointData()).c_str(),
     img->GetPointData()->GetNumberOfArrays() > 1 ? " (--array picks one)" : "");
   if (img->GetCellData()->GetNumberOfArrays() > 0)
