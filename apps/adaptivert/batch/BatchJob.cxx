@@ -262,49 +262,152 @@ std::string Num(const char* fmt, int v)
 }
 } // namespace
 
-BatchJob LoadBatchJob(const std::string& path)
+namespace
+{
+json ReadJobFile(const std::string& path)
 {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec))
   {
     throw art::Error(fs::exists(path, ec) ? "is not a file" : "no such file", path);
   }
-  json j;
   try
   {
     std::ifstream in(path);
-    j = json::parse(in);
+    return json::parse(in);
   }
   catch (const json::exception& e)
   {
     throw art::Error(std::string("not valid JSON: ") + e.what(), path);
   }
+}
+
+// Frames are named after the file; two files of one name (a/ct.mha, b/ct.mha) shared their
+// frames, and the second was never rendered. Later ones get -2, -3, .. (stable per job file).
+// A DICOM folder written with its trailing slash ("series/") has no stem: its frames were
+// named "_c000_s00.png". A folder is named whole (a dot in it is no extension).
+std::string FrameStem(const std::string& ds, std::set<std::string>& stems)
+{
+  std::error_code ec;
+  fs::path named(ds);
+  named = named.has_filename() ? named : named.parent_path();
+  // "brain.nii.gz" is "brain", not "brain.nii".
+  fs::path leaf = named.filename();
+  if (leaf.extension() == ".gz" || leaf.extension() == ".GZ")
+  {
+    leaf = leaf.stem();
+  }
+  const std::string plain = fs::is_directory(named, ec) ? named.filename().string() : leaf.stem().string();
+  std::string stem = plain;
+  for (int n = 2; !stems.insert(stem).second; ++n)
+  {
+    stem = plain + "-" + std::to_string(n);
+  }
+  return stem;
+}
+
+// What the job file says beyond its data sets, checked once.
+struct JobPlan
+{
+  fs::path base;
+  std::string size;
+  std::vector<Cam> cams;
+  json settings, reference;
+  bool withReference = false;
+};
+
+// One data set's reference frames (into refs) and frames (into frames), camera by camera.
+void DatasetTasks(const JobPlan& plan, const std::string& ds, const std::string& stem, const std::string& path,
+  BatchJob& job, std::vector<BatchTask>& refs, std::vector<BatchTask>& frames)
+{
+  art::DataKind dsKind;
+  const art::DataKind* kind = nullptr;
   try
   {
-    const fs::path base = fs::absolute(path).parent_path();
+    dsKind = art::KindOf(ds);
+    kind = &dsKind;
+  }
+  catch (const art::Error&)
+  {
+    // a missing or unknown file fails its frames with the loader's own message
+  }
+  const std::vector<Cam>& cams = plan.cams;
+  for (size_t c = 0; c < cams.size(); ++c)
+  {
+    const std::vector<std::string> view = { "--size", plan.size, "--azimuth", std::to_string(cams[c].azimuth),
+      "--elevation", std::to_string(cams[c].elevation), "--zoom", std::to_string(cams[c].zoom), "--fit",
+      cams.size() > 1 ? "orbit" : "view" }; // one distance for every view
+    const std::string camName = stem + "_c" + Num("%03d", static_cast<int>(c));
+    std::string refName;
+    if (plan.withReference)
+    {
+      BatchTask r;
+      r.name = refName = camName + "_reference";
+      r.dataset = ds;
+      r.args = OptionsToArgs(plan.reference, r.setting, path, plan.base, kind);
+      r.args.insert(r.args.begin(), view.begin(), view.end());
+      r.isReference = true;
+      r.camera = static_cast<int>(c);
+      refs.push_back(std::move(r));
+    }
+    for (size_t s = 0; s < plan.settings.size(); ++s)
+    {
+      BatchTask t;
+      t.name = camName + "_s" + Num("%02d", static_cast<int>(s));
+      t.dataset = ds;
+      std::vector<std::string> dropped;
+      t.args = OptionsToArgs(plan.settings[s], t.setting, path, plan.base, kind, &dropped);
+      if (c == 0 && !dropped.empty())
+      {
+        // Its frames of this data set may repeat another setting's (a surface takes no tets).
+        std::string list;
+        for (const auto& k : dropped)
+        {
+          list += (list.empty() ? "" : ", ") + k;
+        }
+        job.notes.push_back("setting " + std::to_string(s) + "'s " + list + " do" + (dropped.size() == 1 ? "es" : "") +
+          " not apply to " + art::KindName(dsKind) + "s: left out for " + ds);
+      }
+      t.args.insert(t.args.begin(), view.begin(), view.end());
+      t.reference = refName;
+      t.camera = static_cast<int>(c);
+      frames.push_back(std::move(t));
+    }
+  }
+}
+} // namespace
+
+BatchJob LoadBatchJob(const std::string& path)
+{
+  const json j = ReadJobFile(path);
+  try
+  {
     if (!j.is_object())
     {
       throw art::Error("a job is a JSON object of \"datasets\", \"settings\", ...; got " + std::string(j.type_name()), path);
     }
     KnownKeys(j, { "output", "datasets", "size", "cameras", "settings", "reference" }, "the job", path);
+    JobPlan plan;
+    plan.base = fs::absolute(path).parent_path();
     BatchJob job;
     job.file = path;
-    job.outputDir = (base / Field(j, "output", std::string("frames"), path)).lexically_normal().string();
+    job.outputDir = (plan.base / Field(j, "output", std::string("frames"), path)).lexically_normal().string();
     if (!j.contains("datasets") || !j["datasets"].is_array() || j["datasets"].empty())
     {
       throw art::Error("needs \"datasets\": a non-empty list of files", path);
     }
-    const std::string size = Field(j, "size", std::string("400x400"), path);
-    const std::vector<Cam> cams = Cameras(j.contains("cameras") ? j["cameras"] : json(), path);
-    const json settings = j.contains("settings") ? j["settings"] : json::array({ json::object() });
-    if (!settings.is_array() || settings.empty())
+    plan.size = Field(j, "size", std::string("400x400"), path);
+    plan.cams = Cameras(j.contains("cameras") ? j["cameras"] : json(), path);
+    plan.settings = j.contains("settings") ? j["settings"] : json::array({ json::object() });
+    if (!plan.settings.is_array() || plan.settings.empty())
     {
       throw art::Error("\"settings\" must be a non-empty list", path);
     }
-    const bool withReference = j.contains("reference");
-    if (withReference)
+    plan.withReference = j.contains("reference");
+    if (plan.withReference)
     {
-      job.notes = LookNotes(settings, j["reference"]);
+      plan.reference = j["reference"];
+      job.notes = LookNotes(plan.settings, plan.reference);
     }
     std::vector<BatchTask> refs, frames;
     std::set<std::string> stems;
@@ -314,78 +417,8 @@ BatchJob LoadBatchJob(const std::string& path)
       {
         throw art::Error("\"datasets\" must list file names, got " + d.dump(), path);
       }
-      const std::string ds = (base / d.get<std::string>()).lexically_normal().string();
-      // Frames are named after the file; two files of one name (a/ct.mha, b/ct.mha) shared their
-      // frames, and the second was never rendered. Later ones get -2, -3, .. (stable per job file).
-      // A DICOM folder written with its trailing slash ("series/") has no stem: its frames were
-      // named "_c000_s00.png". A folder is named whole (a dot in it is no extension).
-      fs::path named(ds);
-      named = named.has_filename() ? named : named.parent_path();
-      // "brain.nii.gz" is "brain", not "brain.nii".
-      fs::path leaf = named.filename();
-      if (leaf.extension() == ".gz" || leaf.extension() == ".GZ")
-      {
-        leaf = leaf.stem();
-      }
-      const std::string plain = fs::is_directory(named, ec) ? named.filename().string() : leaf.stem().string();
-      std::string stem = plain;
-      for (int n = 2; !stems.insert(stem).second; ++n)
-      {
-        stem = plain + "-" + std::to_string(n);
-      }
-      art::DataKind dsKind;
-      const art::DataKind* kind = nullptr;
-      try
-      {
-        dsKind = art::KindOf(ds);
-        kind = &dsKind;
-      }
-      catch (const art::Error&)
-      {
-        // a missing or unknown file fails its frames with the loader's own message
-      }
-      for (size_t c = 0; c < cams.size(); ++c)
-      {
-        const std::vector<std::string> view = { "--size", size, "--azimuth",
-          std::to_string(cams[c].azimuth), "--elevation", std::to_string(cams[c].elevation),
-          "--zoom", std::to_string(cams[c].zoom), "--fit", cams.size() > 1 ? "orbit" : "view" }; // one distance for every view
-        const std::string camName = stem + "_c" + Num("%03d", static_cast<int>(c));
-        std::string refName;
-        if (withReference)
-        {
-          BatchTask r;
-          r.name = refName = camName + "_reference";
-          r.dataset = ds;
-          r.args = OptionsToArgs(j["reference"], r.setting, path, base, kind);
-          r.args.insert(r.args.begin(), view.begin(), view.end());
-          r.isReference = true;
-          r.camera = static_cast<int>(c);
-          refs.push_back(std::move(r));
-        }
-        for (size_t s = 0; s < settings.size(); ++s)
-        {
-          BatchTask t;
-          t.name = camName + "_s" + Num("%02d", static_cast<int>(s));
-          t.dataset = ds;
-          std::vector<std::string> dropped;
-          t.args = OptionsToArgs(settings[s], t.setting, path, base, kind, &dropped);
-          if (c == 0 && !dropped.empty())
-          {
-            // Its frames of this data set may repeat another setting's (a surface takes no tets).
-            std::string list;
-            for (const auto& k : dropped)
-            {
-              list += (list.empty() ? "" : ", ") + k;
-            }
-            job.notes.push_back("setting " + std::to_string(s) + "'s " + list + " do" + (dropped.size() == 1 ? "es" : "") +
-              " not apply to " + art::KindName(dsKind) + "s: left out for " + ds);
-          }
-          t.args.insert(t.args.begin(), view.begin(), view.end());
-          t.reference = refName;
-          t.camera = static_cast<int>(c);
-          frames.push_back(std::move(t));
-        }
-      }
+      const std::string ds = (plan.base / d.get<std::string>()).lexically_normal().string();
+      DatasetTasks(plan, ds, FrameStem(ds, stems), path, job, refs, frames);
     }
     job.tasks = std::move(refs);
     job.tasks.insert(job.tasks.end(), frames.begin(), frames.end());
