@@ -279,3 +279,7 @@ add_test(NAME cli.render_mesh_default_tf_as_volume COMMAND ${CMAKE_COMMAND} "-DA
   -P "${CMAKE_CURRENT_LIST_DIR}/mesh_default_tf_check.cmake")
 art_expect_test(cli.render_bad_fit EXIT 2 STDERR "--fit expects view or orbit, got 'tight'" ONE_LINE_STDERR
   ARGS render "${_synthetic}/labels.vti" -o "${ART_TEST_OUTPUT}/never.png" --fit tight)
+# --json reports the camera it framed (what ParaView or a vtkCamera needs to draw the same view).
+art_expect_test(cli.render_json_camera EXIT 0
+  STDOUT "\"camera\":\\{\"position\":\\[[-0-9.e]+,[-0-9.e]+,[-0-9.e]+\\],\"focal_point\":\\[.*\"view_angle\":30,"
+  ARGS render "${_synthetic}/labels.vti" -o "${ART_TEST_OUTPUT}/camera.png" --size 32x32 --json --no-error -q)

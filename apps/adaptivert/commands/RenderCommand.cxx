@@ -94,6 +94,18 @@ double Roll(const Options& o)
   return roll;
 }
 
+Json CameraJson(vtkCamera* cam)
+{
+  const double* p = cam->GetPosition();
+  const double* f = cam->GetFocalPoint();
+  const double* u = cam->GetViewUp();
+  Json j;
+  j.Set("position", std::vector<double>(p, p + 3)).Set("focal_point", std::vector<double>(f, f + 3))
+    .Set("view_up", std::vector<double>(u, u + 3)).Set("view_angle", cam->GetViewAngle())
+    .Set("parallel", cam->GetParallelProjection() != 0).Set("parallel_scale", cam->GetParallelScale());
+  return j;
+}
+
 void SetupCamera(const Options& o, const art::Box3& object, const art::Box3& bounds, vtkCamera* cam,
   double defaultElevation)
 {

@@ -7,6 +7,7 @@
 #include "Box3.h"
 #include "Vec3.h"
 #include "DataLoader.h"
+#include "cli/Json.h"
 #include "cli/Options.h"
 
 #include <string>
@@ -52,6 +53,9 @@ View ViewFromOptions(const Options& o);
 /// is not given.
 void SetupCamera(const Options& o, const art::Box3& object, const art::Box3& bounds, vtkCamera* cam,
   double defaultElevation = 0.0);
+/// The camera as render's --json reports it: position, focal_point, view_up, view_angle,
+/// parallel, parallel_scale (what a vtkCamera needs to draw the same view).
+Json CameraJson(vtkCamera* cam);
 /// --view-up applied to `cam` (kept square to its view direction); nothing without it.
 void ApplyViewUp(const Options& o, vtkCamera* cam);
 /// --roll in degrees.

@@ -659,6 +659,7 @@ int Run(const cli::Options& o, const std::string& input)
   const art::Box3 object = cli::ObjectBounds(sc.volume, sc.grid, &sc.mesh, sc.settings, o.Get("tf"));
   vtkNew<vtkCamera> vcam;
   cli::SetupCamera(o, object, bounds, vcam);
+  j.Set("camera", cli::CameraJson(vcam));
   const art::Camera cam = art::Camera::FromVTK(vcam, view.width, view.height);
   if (sc.volume)
   {
