@@ -61,8 +61,8 @@ public:
           {
             checkedPlane = t.plane;
             const PlaneRecord& pl = planes[t.plane];
-            const double den = pl.n[0] * p.dir.x + pl.n[1] * p.dir.y + pl.n[2] * p.dir.z;
-            const double num = pl.d - (pl.n[0] * p.org.x + pl.n[1] * p.org.y + pl.n[2] * p.org.z);
+            const double den = pl.n[0] * p.dir[0] + pl.n[1] * p.dir[1] + pl.n[2] * p.dir[2];
+            const double num = pl.d - (pl.n[0] * p.org[0] + pl.n[1] * p.org[1] + pl.n[2] * p.org[2]);
             planeCulled = false;
             if (den != 0.0)
             {
@@ -77,7 +77,11 @@ public:
         }
         ++c.trianglesTested;
         double th, u, v;
-        if (IntersectTriangle(p, t, r.tmin, best, th, u, v))
+        // Of hits at equal t the lowest input index wins, so the answer does not depend on the
+        // order a structure meets its triangles in.
+        if (IntersectTriangle(p, t, r.tmin, best, th, u, v) &&
+          (th < best || bestRec < 0 || S->OriginalIndex(id) < S->OriginalIndex(bestRec) ||
+            (S->OriginalIndex(id) == S->OriginalIndex(bestRec) && id < bestRec)))
         {
           best = th;
           bu = u;

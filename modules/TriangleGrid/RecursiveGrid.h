@@ -100,6 +100,16 @@ protected:
   static void ChooseDims(const Box3& box, double cells, int dims[3]);
   Box3 PaddedBounds() const;
 
+  /// floor(v) clamped to [0, n - 1] (NaN gives 0), without a call to floor.
+  static int CellOf(double v, int n)
+  {
+    if (!(v >= 0.0))
+    {
+      return 0;
+    }
+    return v >= n ? n - 1 : static_cast<int>(v);
+  }
+
   template <class Visitor>
   bool WalkNode(std::uint32_t g, const RayPrep& p, double t0, double t1, const double (*delta)[3],
     Visitor& visit, Counters& c) const
@@ -111,8 +121,7 @@ protected:
     {
       const double d = p.dir[a];
       const double x = p.org[a] + d * t0;
-      int k = static_cast<int>(std::floor((x - G.lo[a]) * G.invCs[a]));
-      k = std::min(std::max(k, 0), G.n[a] - 1);
+      const int k = CellOf((x - G.lo[a]) * G.invCs[a], G.n[a]);
       i[a] = k;
       tDelta[a] = delta[G.depth][a];
       if (d > 0)

@@ -13,21 +13,25 @@
 
 namespace art
 {
-/// Per-ray constants: the shear of Woop et al. (section 3) and the reciprocal direction for DDA.
+/// Per-ray constants: the shear of Woop et al. (section 3), the reciprocal direction for the DDA,
+/// and origin and direction as plain arrays (indexed by axis in the inner loops).
 struct RayPrep
 {
-  Vec3 org, dir, inv;
+  double org[3], dir[3], inv[3];
   int kx = 0, ky = 1, kz = 2;
+  double Ox = 0, Oy = 0, Oz = 0; ///< the origin permuted: org[kx], org[ky], org[kz]
   double Sx = 0, Sy = 0, Sz = 1;
   double invLen = 1; ///< 1 / |dir|
 
-  explicit RayPrep(const Ray& r) : org(r.org), dir(r.dir)
+  explicit RayPrep(const Ray& r)
   {
     for (int a = 0; a < 3; ++a)
     {
+      org[a] = r.org[a];
+      dir[a] = r.dir[a];
       inv[a] = 1.0 / dir[a]; // +-0 gives +-inf, which the slab and DDA code expect
     }
-    const double ax = std::fabs(dir.x), ay = std::fabs(dir.y), az = std::fabs(dir.z);
+    const double ax = std::fabs(dir[0]), ay = std::fabs(dir[1]), az = std::fabs(dir[2]);
     kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
     kx = (kz + 1) % 3;
     ky = (kx + 1) % 3;
@@ -35,18 +39,21 @@ struct RayPrep
     {
       std::swap(kx, ky); // keep the winding, so the sign of det says which side was hit
     }
+    Ox = org[kx];
+    Oy = org[ky];
+    Oz = org[kz];
     Sx = dir[kx] / dir[kz];
     Sy = dir[ky] / dir[kz];
     Sz = 1.0 / dir[kz];
-    invLen = 1.0 / Length(dir);
+    invLen = 1.0 / std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
   }
 
   /// The ray again, limited to [tmin, tmax] (what a structure clips to its box).
   Ray Segment(double tmin, double tmax) const
   {
     Ray r;
-    r.org = org;
-    r.dir = dir;
+    r.org = Vec3(org[0], org[1], org[2]);
+    r.dir = Vec3(dir[0], dir[1], dir[2]);
     r.tmin = tmin;
     r.tmax = tmax;
     return r;
@@ -60,12 +67,12 @@ struct RayPrep
 inline bool IntersectTriangle(const RayPrep& r, const TriangleRecord& t, double tmin, double tmax,
   double& tHit, double& u, double& v)
 {
-  const double Ax0 = double(t.p[0][r.kx]) - r.org[r.kx], Ay0 = double(t.p[0][r.ky]) - r.org[r.ky],
-               Az0 = double(t.p[0][r.kz]) - r.org[r.kz];
-  const double Bx0 = double(t.p[1][r.kx]) - r.org[r.kx], By0 = double(t.p[1][r.ky]) - r.org[r.ky],
-               Bz0 = double(t.p[1][r.kz]) - r.org[r.kz];
-  const double Cx0 = double(t.p[2][r.kx]) - r.org[r.kx], Cy0 = double(t.p[2][r.ky]) - r.org[r.ky],
-               Cz0 = double(t.p[2][r.kz]) - r.org[r.kz];
+  const double Ax0 = double(t.p[0][r.kx]) - r.Ox, Ay0 = double(t.p[0][r.ky]) - r.Oy,
+               Az0 = double(t.p[0][r.kz]) - r.Oz;
+  const double Bx0 = double(t.p[1][r.kx]) - r.Ox, By0 = double(t.p[1][r.ky]) - r.Oy,
+               Bz0 = double(t.p[1][r.kz]) - r.Oz;
+  const double Cx0 = double(t.p[2][r.kx]) - r.Ox, Cy0 = double(t.p[2][r.ky]) - r.Oy,
+               Cz0 = double(t.p[2][r.kz]) - r.Oz;
   const double Ax = Ax0 - r.Sx * Az0, Ay = Ay0 - r.Sy * Az0;
   const double Bx = Bx0 - r.Sx * Bz0, By = By0 - r.Sy * Bz0;
   const double Cx = Cx0 - r.Sx * Cz0, Cy = Cy0 - r.Sy * Cz0;
