@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace art
 {
@@ -47,15 +48,17 @@ Counters Accelerator::AnyBatch(const std::vector<Ray>& rays, std::vector<unsigne
 
 namespace
 {
-bool ShareVertex(const TriangleRecord& a, const TriangleRecord& b)
+bool ShareVertex(const TriangleStore& s, const TriangleRecord& a, const TriangleRecord& b)
 {
   // By position, not index: polygon soups repeat points for each face.
+  const float* xyz = s.Vertices();
   for (int i = 0; i < 3; ++i)
   {
+    const float* p = xyz + 3 * size_t(a.v[i]);
     for (int j = 0; j < 3; ++j)
     {
-      if (a.v[i] == b.v[j] ||
-        (a.p[i][0] == b.p[j][0] && a.p[i][1] == b.p[j][1] && a.p[i][2] == b.p[j][2]))
+      const float* q = xyz + 3 * size_t(b.v[j]);
+      if (a.v[i] == b.v[j] || (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]))
       {
         return true;
       }
@@ -79,7 +82,7 @@ void SortAndMergeHits(const TriangleStore& s, std::vector<Hit>& hits, double tol
     for (auto it = out.rbegin(); it != out.rend() && h.t - it->t <= tol; ++it)
     {
       if (it->record == h.record ||
-        ShareVertex(s.Record(static_cast<size_t>(it->record)), s.Record(static_cast<size_t>(h.record))))
+        ShareVertex(s, s.Record(static_cast<size_t>(it->record)), s.Record(static_cast<size_t>(h.record))))
       {
         repeat = true;
         break;
@@ -95,6 +98,15 @@ void SortAndMergeHits(const TriangleStore& s, std::vector<Hit>& hits, double tol
     h.triangle = s.OriginalIndex(static_cast<size_t>(h.record));
   }
   hits.swap(out);
+}
+
+std::vector<std::uint32_t> PlaneOrder(const TriangleStore& s)
+{
+  std::vector<std::uint32_t> ids(s.Size());
+  std::iota(ids.begin(), ids.end(), 0u);
+  std::stable_sort(ids.begin(), ids.end(),
+    [&s](std::uint32_t a, std::uint32_t b) { return s.Record(a).plane < s.Record(b).plane; });
+  return ids;
 }
 
 std::unique_ptr<Accelerator> MakeAccelerator(std::shared_ptr<const TriangleStore> store, const AcceleratorOptions& o)

@@ -106,6 +106,10 @@ ADAPTIVERTTRIANGLEGRID_EXPORT std::unique_ptr<Accelerator> MakeAccelerator(
 /// `tol` in t on triangles that share a vertex (a ray through a shared edge or vertex).
 ADAPTIVERTTRIANGLEGRID_EXPORT void SortAndMergeHits(const TriangleStore& s, std::vector<Hit>& hits, double tol);
 
+/// Every record, those sharing a plane grouped by plane (in record order within it), then the
+/// others: the order the structures keep in their voxels, so one plane test culls a whole run.
+ADAPTIVERTTRIANGLEGRID_EXPORT std::vector<std::uint32_t> PlaneOrder(const TriangleStore& s);
+
 /// "brute", "uniform", "recursive", "octree" -> kind; throws art::Error otherwise.
 ADAPTIVERTTRIANGLEGRID_EXPORT AcceleratorKind AcceleratorKindFromName(const std::string& name);
 } // namespace art

@@ -37,6 +37,7 @@ public:
     }
     const RayPrep p(r);
     const TriangleRecord* rec = S->Data();
+    const float* xyz = S->Vertices();
     const PlaneRecord* planes = S->Planes().data();
     const double planeMargin = 1e-5 * S->Bounds().Diagonal();
     Mailbox mb;
@@ -53,7 +54,7 @@ public:
           continue; // before touching the record: a repeat costs no memory traffic
         }
         const TriangleRecord& t = rec[id];
-        if (t.flags & TriangleRecord::SharedPlane || t.plane == checkedPlane)
+        if (t.plane != TriangleRecord::NoPlane)
         {
           // Coplanar triangles share a plane: one ray/plane distance culls them all when the
           // plane lies beyond the nearest hit so far (or before tmin).
@@ -77,11 +78,9 @@ public:
         }
         ++c.trianglesTested;
         double th, u, v;
-        // Of hits at equal t the lowest input index wins, so the answer does not depend on the
-        // order a structure meets its triangles in.
-        if (IntersectTriangle(p, t, r.tmin, best, th, u, v) &&
-          (th < best || bestRec < 0 || S->OriginalIndex(id) < S->OriginalIndex(bestRec) ||
-            (S->OriginalIndex(id) == S->OriginalIndex(bestRec) && id < bestRec)))
+        // Of hits at equal t the lowest record (the lowest input index) wins, so the answer does
+        // not depend on the order a structure meets its triangles in.
+        if (IntersectTriangle(p, xyz, t, r.tmin, best, th, u, v) && (th < best || bestRec < 0 || id < bestRec))
         {
           best = th;
           bu = u;
@@ -115,6 +114,7 @@ public:
     }
     const RayPrep p(r);
     const TriangleRecord* rec = S->Data();
+    const float* xyz = S->Vertices();
     Mailbox mb;
     bool found = false;
     auto visit = [&](const std::uint32_t* ids, std::uint32_t n, double) {
@@ -126,7 +126,7 @@ public:
         }
         ++c.trianglesTested;
         double th, u, v;
-        if (IntersectTriangle(p, rec[ids[k]], r.tmin, r.tmax, th, u, v))
+        if (IntersectTriangle(p, xyz, rec[ids[k]], r.tmin, r.tmax, th, u, v))
         {
           found = true;
           return true;
@@ -149,6 +149,7 @@ public:
     }
     const RayPrep p(r);
     const TriangleRecord* rec = S->Data();
+    const float* xyz = S->Vertices();
     Mailbox mb;
     auto visit = [&](const std::uint32_t* ids, std::uint32_t n, double) {
       for (std::uint32_t k = 0; k < n; ++k)
@@ -159,7 +160,7 @@ public:
         }
         ++c.trianglesTested;
         Hit h;
-        if (IntersectTriangle(p, rec[ids[k]], r.tmin, r.tmax, h.t, h.u, h.v))
+        if (IntersectTriangle(p, xyz, rec[ids[k]], r.tmin, r.tmax, h.t, h.u, h.v))
         {
           h.record = ids[k];
           hits.push_back(h);
@@ -180,7 +181,6 @@ public:
       return false;
     }
     const TriangleRecord* rec = S->Data();
-    const Vec3* P = S->Points().data();
     const double slack = FloatSlack(S->Bounds());
     double best2 = maxDist2;
     double prune2 = std::isinf(maxDist2) ? maxDist2 : (std::sqrt(maxDist2) + slack) * (std::sqrt(maxDist2) + slack);
@@ -195,7 +195,7 @@ public:
         }
         // The triangle's box first: a lower bound that is cheap (most triangles of a far voxel
         // end here); the float box is within `slack` of the double triangle, as prune2 allows.
-        const TriangleBox& tb = S->RecordBox(id);
+        const TriangleBox tb = S->RecordBox(id);
         const double blo[3] = { tb.lo[0], tb.lo[1], tb.lo[2] }, bhi[3] = { tb.hi[0], tb.hi[1], tb.hi[2] };
         if (BoxDistance2(blo, bhi, x) > prune2)
         {
@@ -205,7 +205,7 @@ public:
         const TriangleRecord& t = rec[id];
         Vec3 q;
         double u, v;
-        const bool in = ClosestPointOnTriangle(x, P[t.v[0]], P[t.v[1]], P[t.v[2]], q, u, v);
+        const bool in = ClosestPointOnTriangle(x, S->Point(t.v[0]), S->Point(t.v[1]), S->Point(t.v[2]), q, u, v);
         const Vec3 e = x - q;
         const double d2 = Dot(e, e);
         // Ties go to the lowest input index, so every structure gives the same answer.
@@ -264,13 +264,12 @@ public:
     static_cast<const Derived*>(this)->Overlap(box, visit);
     std::sort(recs.begin(), recs.end());
     recs.erase(std::unique(recs.begin(), recs.end()), recs.end());
-    const Vec3* P = S->Points().data();
     const Vec3 centre = box.Center(), half = box.Size() * 0.5;
     for (std::uint32_t id : recs)
     {
       ++c.trianglesTested;
       const TriangleRecord& t = S->Record(id);
-      if (TriBoxOverlap(centre, half, P[t.v[0]], P[t.v[1]], P[t.v[2]]))
+      if (TriBoxOverlap(centre, half, S->Point(t.v[0]), S->Point(t.v[1]), S->Point(t.v[2])))
       {
         out.push_back(S->OriginalIndex(id));
       }

@@ -14,9 +14,8 @@ class ADAPTIVERTTRIANGLEGRID_EXPORT BruteForce : public WalkingAccelerator<Brute
 public:
   explicit BruteForce(std::shared_ptr<const TriangleStore> s)
     : WalkingAccelerator<BruteForce>(std::move(s))
-    , Ids(S->Size())
+    , Ids(PlaneOrder(*S))
   {
-    std::iota(Ids.begin(), Ids.end(), 0u);
   }
   size_t MemoryBytes() const override { return Ids.size() * sizeof(std::uint32_t); }
   std::string Name() const override { return "brute force"; }

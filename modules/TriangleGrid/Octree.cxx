@@ -27,11 +27,7 @@ Octree::Octree(std::shared_ptr<const TriangleStore> s, const AcceleratorOptions&
   const double h = 0.5 * std::max({ e.x, e.y, e.z }) * (1 + 1e-6) + 1e-300;
   Root = Box3(c - Vec3(h, h, h), c + Vec3(h, h, h));
   IdBudget = 64 * std::max<size_t>(S->Size(), 1024);
-  std::vector<std::uint32_t> all(S->Size());
-  for (size_t i = 0; i < all.size(); ++i)
-  {
-    all[i] = static_cast<std::uint32_t>(i);
-  }
+  std::vector<std::uint32_t> all = PlaneOrder(*S);
   Nodes.push_back(ONode{ 0, 0 });
   const double lo[3] = { Root.lo.x, Root.lo.y, Root.lo.z }, hi[3] = { Root.hi.x, Root.hi.y, Root.hi.z };
   BuildNode(0, lo, hi, all, 0, 0);
@@ -40,13 +36,13 @@ Octree::Octree(std::shared_ptr<const TriangleStore> s, const AcceleratorOptions&
 
 double Octree::Cost(const std::vector<std::uint32_t>& ids) const
 {
-  // ids are in store order, so coplanar triangles are adjacent.
+  // ids are in plane order (PlaneOrder), so coplanar triangles are adjacent.
   double cost = 0;
   std::uint32_t last = ~0u;
   for (std::uint32_t id : ids)
   {
     const std::uint32_t pl = S->Record(id).plane;
-    cost += pl == last ? 1.0 / Weight : 1.0;
+    cost += pl == last && pl != TriangleRecord::NoPlane ? 1.0 / Weight : 1.0;
     last = pl;
   }
   return cost;

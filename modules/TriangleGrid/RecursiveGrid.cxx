@@ -66,7 +66,7 @@ RecursiveGrid::RecursiveGrid(std::shared_ptr<const TriangleStore> s, const Accel
     std::vector<double> hist(static_cast<size_t>(h[0]) * h[1] * h[2], 0.0);
     for (size_t t = 0; t < n; ++t)
     {
-      const TriangleBox& b = S->RecordBox(t);
+      const TriangleBox b = S->RecordBox(t);
       int idx[3];
       for (int a = 0; a < 3; ++a)
       {
@@ -119,12 +119,7 @@ void RecursiveGrid::Build(const int dims[3], int thr, int sub)
       LevelCell[d][a] = top.cs[a] / std::pow(double(std::max(sub, 1)), d);
     }
   }
-  std::vector<std::uint32_t> all(S->Size());
-  for (size_t i = 0; i < all.size(); ++i)
-  {
-    all[i] = static_cast<std::uint32_t>(i);
-  }
-  BuildNode(0, all, 0);
+  BuildNode(0, PlaneOrder(*S), 0);
   Ids.shrink_to_fit();
 }
 
@@ -143,7 +138,7 @@ void RecursiveGrid::BuildNode(std::uint32_t node, const std::vector<std::uint32_
   }
   for (std::uint32_t id : ids)
   {
-    const TriangleBox& b = S->RecordBox(id);
+    const TriangleBox b = S->RecordBox(id);
     int lo[3], hi[3];
     for (int a = 0; a < 3; ++a)
     {
@@ -219,7 +214,7 @@ void RecursiveGrid::BuildNode(std::uint32_t node, const std::vector<std::uint32_
       bool separates = false;
       for (std::uint32_t k = start[c]; k < start[c + 1] && !separates; ++k)
       {
-        const TriangleBox& b = S->RecordBox(sorted[k]);
+        const TriangleBox b = S->RecordBox(sorted[k]);
         for (int a = 0; a < 3 && !separates; ++a)
         {
           separates = double(b.lo[a]) > ch.lo[a] + ch.cs[a] || double(b.hi[a]) < ch.lo[a] + (Sub - 1) * ch.cs[a];

@@ -25,7 +25,7 @@ SurfaceTracer::SurfaceTracer(const Accelerator& acc, SurfaceTracerSettings s)
   if (S.smooth)
   {
     // Area-weighted vertex normals, each triangle oriented as it was given.
-    Normals.assign(st.Points().size(), Vec3());
+    Normals.assign(st.PointCount(), Vec3());
     for (size_t i = 0; i < st.Size(); ++i)
     {
       const TriangleRecord& t = st.Record(i);

@@ -1,5 +1,4 @@
 #include "TriangleStore.h"
-#include "Morton.h"
 
 #include "Error.h"
 
@@ -13,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <tuple>
+#include <unordered_map>
 
 namespace art
 {
@@ -28,31 +27,41 @@ TriangleStore::TriangleStore(
 void TriangleStore::Build(std::vector<Vec3> points, const std::vector<std::array<long long, 3>>& triangles,
   const std::vector<long long>& original, const Vec3& origin)
 {
-  Pts = std::move(points);
-  for (Vec3& p : Pts)
-  {
-    p = p - origin;
-  }
-  const long long np = static_cast<long long>(Pts.size());
+  // The points less the origin, in double; in float for tracing. The double copy is kept only
+  // when some point is not exactly its float.
+  Exact = std::move(points);
+  Xyz.assign(3 * Exact.size() + 1, 0.0f);
   Box = Box3();
-  for (const Vec3& p : Pts)
+  bool floats = true;
+  for (size_t i = 0; i < Exact.size(); ++i)
   {
+    Vec3& p = Exact[i];
+    p = p - origin;
+    for (int a = 0; a < 3; ++a)
+    {
+      Xyz[3 * i + a] = static_cast<float>(p[a]);
+      floats = floats && (double(Xyz[3 * i + a]) == p[a] || !std::isfinite(p[a]));
+    }
     if (IsFinite(p))
     {
-      Box.Expand(Vec3(float(p.x), float(p.y), float(p.z)));
+      Box.Expand(Vec3(Xyz[3 * i], Xyz[3 * i + 1], Xyz[3 * i + 2]));
     }
   }
-  const double diag = std::max(Box.Diagonal(), 1e-300);
-
-  // Candidate triangles with their plane, in the float geometry we will actually trace.
-  struct Cand
+  if (floats)
   {
-    size_t src;
-    double n[3], d;
-    long long key[4];
-  };
-  std::vector<Cand> cands;
-  cands.reserve(triangles.size());
+    Exact.clear();
+    Exact.shrink_to_fit();
+  }
+  const long long np = static_cast<long long>(PointCount());
+
+  // The records in input order, with each one's plane in the float geometry we trace.
+  Records.clear();
+  Records.reserve(triangles.size());
+  std::vector<long long> kept;
+  kept.reserve(triangles.size());
+  std::vector<std::array<double, 4>> planes;
+  planes.reserve(triangles.size());
+  Dropped = 0;
   for (size_t i = 0; i < triangles.size(); ++i)
   {
     const auto& t = triangles[i];
@@ -60,11 +69,12 @@ void TriangleStore::Build(std::vector<Vec3> points, const std::vector<std::array
     Vec3 q[3];
     for (int k = 0; k < 3 && ok; ++k)
     {
-      ok = t[k] >= 0 && t[k] < np && IsFinite(Pts[t[k]]);
+      ok = t[k] >= 0 && t[k] < np;
       if (ok)
       {
-        const Vec3& p = Pts[t[k]];
-        q[k] = Vec3(float(p.x), float(p.y), float(p.z));
+        const float* p = Xyz.data() + 3 * t[k];
+        q[k] = Vec3(p[0], p[1], p[2]);
+        ok = IsFinite(q[k]);
       }
     }
     if (!ok)
@@ -87,100 +97,58 @@ void TriangleStore::Build(std::vector<Vec3> points, const std::vector<std::array
     {
       u = -u;
     }
-    Cand c;
-    c.src = i;
-    c.n[0] = u.x;
-    c.n[1] = u.y;
-    c.n[2] = u.z;
-    c.d = Dot(u, q[0]);
-    // Coplanar triangles get equal keys: normal and offset quantised (1e-6 of the scene).
-    c.key[0] = std::llround(u.x * 1e6);
-    c.key[1] = std::llround(u.y * 1e6);
-    c.key[2] = std::llround(u.z * 1e6);
-    c.key[3] = std::llround(c.d / diag * 1e6);
-    cands.push_back(c);
+    planes.push_back({ u.x, u.y, u.z, Dot(u, q[0]) });
+    Records.push_back({ { static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]),
+                          static_cast<std::uint32_t>(t[2]) },
+      TriangleRecord::NoPlane });
+    kept.push_back(original[i]);
   }
-  std::stable_sort(cands.begin(), cands.end(), [](const Cand& x, const Cand& y) {
-    return std::tie(x.key[0], x.key[1], x.key[2], x.key[3]) < std::tie(y.key[0], y.key[1], y.key[2], y.key[3]);
-  });
-  // Coplanar runs stay together, and the runs are laid out along a Morton curve (by the centroid of
-  // a run's first triangle), so triangles that are near in space are near in memory: a ray's tests
-  // in one voxel then touch neighbouring cache lines.
-  {
-    std::vector<std::pair<std::uint64_t, size_t>> runs; // (morton, first index)
-    for (size_t i = 0; i < cands.size(); ++i)
-    {
-      if (i > 0 && std::equal(cands[i].key, cands[i].key + 4, cands[i - 1].key))
-      {
-        continue;
-      }
-      const auto& t = triangles[cands[i].src];
-      Vec3 centroid;
-      for (int a = 0; a < 3; ++a)
-      {
-        centroid[a] = (float(Pts[t[0]][a]) + float(Pts[t[1]][a]) + float(Pts[t[2]][a])) / 3.0;
-      }
-      runs.emplace_back(MortonCode(centroid, Box), i);
-    }
-    std::stable_sort(runs.begin(), runs.end());
-    std::vector<Cand> ordered;
-    ordered.reserve(cands.size());
-    for (const auto& r : runs)
-    {
-      size_t i = r.second;
-      do
-      {
-        ordered.push_back(cands[i++]);
-      } while (i < cands.size() && std::equal(cands[i].key, cands[i].key + 4, cands[i - 1].key));
-    }
-    cands.swap(ordered);
-  }
+  Records.shrink_to_fit();
+  Original.Assign(kept);
+  FindPlanes(planes);
+}
 
-  Records.resize(cands.size());
-  Boxes.resize(cands.size());
-  Original.resize(cands.size());
-  PlaneList.clear();
-  for (size_t r = 0; r < cands.size(); ++r)
+void TriangleStore::FindPlanes(const std::vector<std::array<double, 4>>& planes)
+{
+  // Coplanar triangles get equal keys: normal and offset quantised (1e-6 of the scene). A plane
+  // met by two or more triangles gets a record, taken from the first of them.
+  const double diag = std::max(Box.Diagonal(), 1e-300);
+  struct KeyHash
   {
-    const Cand& c = cands[r];
-    const bool newPlane = r == 0 ||
-      std::tie(c.key[0], c.key[1], c.key[2], c.key[3]) !=
-        std::tie(cands[r - 1].key[0], cands[r - 1].key[1], cands[r - 1].key[2], cands[r - 1].key[3]);
-    if (newPlane)
+    size_t operator()(const std::array<long long, 4>& k) const
     {
-      PlaneList.push_back({ { c.n[0], c.n[1], c.n[2] }, c.d });
-    }
-    else
-    {
-      Records[r - 1].flags |= TriangleRecord::SharedPlane;
-    }
-    TriangleRecord& rec = Records[r];
-    TriangleBox& b = Boxes[r];
-    rec = TriangleRecord{};
-    const auto& t = triangles[c.src];
-    for (int k = 0; k < 3; ++k)
-    {
-      rec.v[k] = static_cast<std::uint32_t>(t[k]);
-      for (int a = 0; a < 3; ++a)
+      std::uint64_t h = 1469598103934665603ull;
+      for (long long v : k)
       {
-        rec.p[k][a] = static_cast<float>(Pts[t[k]][a]);
+        h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
       }
+      return static_cast<size_t>(h ^ (h >> 29));
     }
-    for (int a = 0; a < 3; ++a)
+  };
+  std::unordered_map<std::array<long long, 4>, std::uint32_t, KeyHash> first; // key -> first record
+  first.reserve(planes.size());
+  PlaneList.clear();
+  Alone = 0;
+  for (size_t r = 0; r < planes.size(); ++r)
+  {
+    const auto& p = planes[r];
+    const std::array<long long, 4> key = { std::llround(p[0] * 1e6), std::llround(p[1] * 1e6),
+      std::llround(p[2] * 1e6), std::llround(p[3] / diag * 1e6) };
+    const auto ins = first.emplace(key, static_cast<std::uint32_t>(r));
+    if (ins.second)
     {
-      b.lo[a] = std::min({ rec.p[0][a], rec.p[1][a], rec.p[2][a] });
-      b.hi[a] = std::max({ rec.p[0][a], rec.p[1][a], rec.p[2][a] });
+      ++Alone;
+      continue;
     }
-    rec.plane = static_cast<std::uint32_t>(PlaneList.size() - 1);
-    const double* n = c.n;
-    const int dom = std::fabs(n[0]) >= std::fabs(n[1]) ? (std::fabs(n[0]) >= std::fabs(n[2]) ? 0 : 2)
-                                                       : (std::fabs(n[1]) >= std::fabs(n[2]) ? 1 : 2);
-    rec.flags |= static_cast<std::uint32_t>(dom) << 2;
-    if (std::fabs(n[dom]) == 1.0)
+    TriangleRecord& head = Records[ins.first->second];
+    if (head.plane == TriangleRecord::NoPlane)
     {
-      rec.flags |= TriangleRecord::AxisPlane;
+      const auto& q = planes[ins.first->second];
+      head.plane = static_cast<std::uint32_t>(PlaneList.size());
+      PlaneList.push_back({ { float(q[0]), float(q[1]), float(q[2]) }, float(q[3]) });
+      --Alone;
     }
-    Original[r] = original[c.src];
+    Records[r].plane = head.plane;
   }
 }
 
@@ -305,7 +273,7 @@ TriangleStore TriangleStore::FromPolyData(vtkPolyData* pd, const Vec3& origin)
 
 size_t TriangleStore::MemoryBytes() const
 {
-  return Records.size() * sizeof(TriangleRecord) + Boxes.size() * sizeof(TriangleBox) +
-    PlaneList.size() * sizeof(PlaneRecord) + Pts.size() * sizeof(Vec3) + Original.size() * sizeof(long long);
+  return Records.size() * sizeof(TriangleRecord) + PlaneList.size() * sizeof(PlaneRecord) +
+    Xyz.size() * sizeof(float) + Exact.size() * sizeof(Vec3) + Original.MemoryBytes();
 }
 } // namespace art

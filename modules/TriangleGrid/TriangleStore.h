@@ -1,12 +1,18 @@
 // TriangleStore: the one triangle store of the ray tracing machine (Dmitriev, "Efficiency issues
-// on Ray Tracing Machine", section 2): array-of-structs records, one cache line each, sorted by
-// plane so coplanar triangles are neighbours and share one plane record.
+// on Ray Tracing Machine", section 2, the TrgInfo record): per triangle 16 bytes (three vertex
+// indices and the index of the plane it shares with other triangles), the vertices once, in
+// float. Coplanar triangles share one plane record, so one ray/plane distance culls them all.
+// Records keep the input's order (zero-area triangles dropped), so the lowest record of a tie is
+// the lowest input index; OriginalIndex maps a record back to its input (the polydata cell id).
+// Points are kept in double only when some coordinate is not exactly a float.
 #ifndef art_TriangleStore_h
 #define art_TriangleStore_h
 
 #include "AdaptiveRTTriangleGridModule.h"
 #include "Box3.h"
+#include "OriginalIndexMap.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -15,31 +21,24 @@ class vtkPolyData;
 
 namespace art
 {
-/// One triangle, 64 bytes. Positions are copied in (float) so a test touches one cache line;
-/// the indices name the input points.
+/// One triangle, 16 bytes: vertex indices and its shared plane.
 struct TriangleRecord
 {
-  enum : std::uint32_t
-  {
-    SharedPlane = 1u << 0, ///< the next record lies in the same plane
-    AxisPlane = 1u << 1    ///< the plane is perpendicular to an axis
-  };
-  float p[3][3];          ///< vertex positions
-  std::uint32_t v[3];     ///< vertex indices into Points()
-  std::uint32_t plane;    ///< index into Planes()
-  std::uint32_t flags;    ///< SharedPlane, AxisPlane, dominant normal axis in bits 2-3
-  std::uint32_t pad[2];
+  static constexpr std::uint32_t NoPlane = 0xffffffffu; ///< the triangle has a plane of its own
+  std::uint32_t v[3];  ///< vertex indices into the store's points
+  std::uint32_t plane; ///< index into Planes(), or NoPlane
 };
-static_assert(sizeof(TriangleRecord) == 64, "one cache line");
+static_assert(sizeof(TriangleRecord) == 16, "four records per cache line");
 
-/// A plane n.x = d shared by every coplanar triangle (n unit, largest component positive).
+/// A plane n.x = d shared by several coplanar triangles (n unit, largest component positive).
+/// Float is enough: it only culls, with a margin far above its rounding.
 struct PlaneRecord
 {
-  double n[3];
-  double d;
+  float n[3];
+  float d;
 };
 
-/// Box of a record in float (kept beside the records: it is needed to build, not to trace).
+/// Axis-aligned box of a record's float vertices.
 struct TriangleBox
 {
   float lo[3], hi[3];
@@ -65,34 +64,64 @@ public:
 
   size_t Size() const { return Records.size(); }
   Box3 Bounds() const { return Box; }
-  long long OriginalIndex(size_t record) const { return Original[record]; }
+  long long OriginalIndex(size_t record) const { return Original.At(record); }
   size_t DroppedCount() const { return Dropped; }
 
   const TriangleRecord& Record(size_t i) const { return Records[i]; }
   const TriangleRecord* Data() const { return Records.data(); }
-  const TriangleBox& RecordBox(size_t i) const { return Boxes[i]; }
+  /// The planes shared by two or more triangles.
   const std::vector<PlaneRecord>& Planes() const { return PlaneList; }
-  const std::vector<Vec3>& Points() const { return Pts; }
+  /// Distinct planes over all triangles (shared ones counted once, plus one per other triangle).
+  size_t PlaneCount() const { return PlaneList.size() + Alone; }
+
+  size_t PointCount() const { return Xyz.size() / 3; }
+  /// Point i in double (store coordinates): the exact input less the origin.
+  Vec3 Point(size_t i) const
+  {
+    return Exact.empty() ? Vec3(Xyz[3 * i], Xyz[3 * i + 1], Xyz[3 * i + 2]) : Exact[i];
+  }
+  /// The float vertices the rays are traced against, x y z per point (one float of padding after
+  /// the last, so a 16-byte load of any point stays inside).
+  const float* Vertices() const { return Xyz.data(); }
+  /// Vertex k of a record, in float (as traced).
   Vec3 Vertex(size_t record, int k) const
   {
-    const float* p = Records[record].p[k];
+    const float* p = Xyz.data() + 3 * size_t(Records[record].v[k]);
     return { p[0], p[1], p[2] };
   }
-  /// Bytes held (records, boxes, planes, points, index map).
+  TriangleBox RecordBox(size_t record) const;
+  /// True when every point is exactly a float: the double points are not kept.
+  bool PointsAreFloats() const { return Exact.empty(); }
+  /// Bytes held (records, planes, points, index map).
   size_t MemoryBytes() const;
 
 private:
   void Build(std::vector<Vec3> points, const std::vector<std::array<long long, 3>>& triangles,
     const std::vector<long long>& original, const Vec3& origin);
+  void FindPlanes(const std::vector<std::array<double, 4>>& planes);
 
-  std::vector<Vec3> Pts;
+  std::vector<float> Xyz;
+  std::vector<Vec3> Exact;
   std::vector<TriangleRecord> Records;
-  std::vector<TriangleBox> Boxes;
   std::vector<PlaneRecord> PlaneList;
-  std::vector<long long> Original;
+  OriginalIndexMap Original;
   Box3 Box;
-  size_t Dropped = 0;
+  size_t Dropped = 0, Alone = 0;
 };
+
+inline TriangleBox TriangleStore::RecordBox(size_t record) const
+{
+  const TriangleRecord& r = Records[record];
+  const float *a = Xyz.data() + 3 * size_t(r.v[0]), *b = Xyz.data() + 3 * size_t(r.v[1]),
+              *c = Xyz.data() + 3 * size_t(r.v[2]);
+  TriangleBox box;
+  for (int k = 0; k < 3; ++k)
+  {
+    box.lo[k] = std::min(a[k], std::min(b[k], c[k]));
+    box.hi[k] = std::max(a[k], std::max(b[k], c[k]));
+  }
+  return box;
+}
 } // namespace art
 
 #endif

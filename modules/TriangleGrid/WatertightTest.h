@@ -60,19 +60,17 @@ struct RayPrep
   }
 };
 
-/// Tests one record; accepts t in [tmin, tmax]. u, v weight vertices 1 and 2.
+/// Tests one record against the store's float vertices `xyz`; accepts t in [tmin, tmax]. u, v weight vertices 1 and 2.
 /// Edge functions are computed per vertex pair from per-vertex values, so the two triangles of a
 /// shared edge get exactly opposite values and a ray can never pass between them. The module is
 /// compiled with -ffp-contract=off so no fused multiply-add breaks that symmetry.
-inline bool IntersectTriangle(const RayPrep& r, const TriangleRecord& t, double tmin, double tmax,
-  double& tHit, double& u, double& v)
+inline bool IntersectTriangle(const RayPrep& r, const float* xyz, const TriangleRecord& t, double tmin,
+  double tmax, double& tHit, double& u, double& v)
 {
-  const double Ax0 = double(t.p[0][r.kx]) - r.Ox, Ay0 = double(t.p[0][r.ky]) - r.Oy,
-               Az0 = double(t.p[0][r.kz]) - r.Oz;
-  const double Bx0 = double(t.p[1][r.kx]) - r.Ox, By0 = double(t.p[1][r.ky]) - r.Oy,
-               Bz0 = double(t.p[1][r.kz]) - r.Oz;
-  const double Cx0 = double(t.p[2][r.kx]) - r.Ox, Cy0 = double(t.p[2][r.ky]) - r.Oy,
-               Cz0 = double(t.p[2][r.kz]) - r.Oz;
+  const float *A = xyz + 3 * size_t(t.v[0]), *B = xyz + 3 * size_t(t.v[1]), *C = xyz + 3 * size_t(t.v[2]);
+  const double Ax0 = double(A[r.kx]) - r.Ox, Ay0 = double(A[r.ky]) - r.Oy, Az0 = double(A[r.kz]) - r.Oz;
+  const double Bx0 = double(B[r.kx]) - r.Ox, By0 = double(B[r.ky]) - r.Oy, Bz0 = double(B[r.kz]) - r.Oz;
+  const double Cx0 = double(C[r.kx]) - r.Ox, Cy0 = double(C[r.ky]) - r.Oy, Cz0 = double(C[r.kz]) - r.Oz;
   const double Ax = Ax0 - r.Sx * Az0, Ay = Ay0 - r.Sy * Az0;
   const double Bx = Bx0 - r.Sx * Bz0, By = By0 - r.Sy * Bz0;
   const double Cx = Cx0 - r.Sx * Cz0, Cy = Cy0 - r.Sy * Cz0;

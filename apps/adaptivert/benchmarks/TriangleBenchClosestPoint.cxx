@@ -54,8 +54,8 @@ std::vector<art::Vec3> QueryPoints(const art::TriangleStore& st, size_t n)
         w1 = 1 - w1, w2 = 1 - w2;
       }
       const art::TriangleRecord& r = st.Record(t);
-      const auto& P = st.Points();
-      xs[i] = P[r.v[0]] + (P[r.v[1]] - P[r.v[0]]) * w1 + (P[r.v[2]] - P[r.v[0]]) * w2 + d * (0.01 * diag * u(g));
+      const art::Vec3 p0 = st.Point(r.v[0]), p1 = st.Point(r.v[1]), p2 = st.Point(r.v[2]);
+      xs[i] = p0 + (p1 - p0) * w1 + (p2 - p0) * w2 + d * (0.01 * diag * u(g));
     }
     else
     {

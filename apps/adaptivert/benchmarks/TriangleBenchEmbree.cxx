@@ -4,6 +4,7 @@
 #ifdef ART_HAVE_EMBREE
 #include "benchmarks/TriangleBench.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -68,15 +69,10 @@ EmbreeScene::EmbreeScene(const art::TriangleStore& s)
   scene = rtcNewScene(dev);
   RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
   // The same float vertices our store traces, one vertex triple per triangle record.
-  const auto& pts = s.Points();
+  const size_t np = s.PointCount();
   float* v = static_cast<float*>(
-    rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), pts.size()));
-  for (size_t i = 0; i < pts.size(); ++i)
-  {
-    v[3 * i] = float(pts[i].x);
-    v[3 * i + 1] = float(pts[i].y);
-    v[3 * i + 2] = float(pts[i].z);
-  }
+    rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), np));
+  std::copy(s.Vertices(), s.Vertices() + 3 * np, v);
   unsigned* idx = static_cast<unsigned*>(
     rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), s.Size()));
   for (size_t i = 0; i < s.Size(); ++i)

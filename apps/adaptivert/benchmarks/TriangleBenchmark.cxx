@@ -185,7 +185,7 @@ void MakeRays(Scene& s, int width, int height, int nLights)
   std::vector<art::Vec3> lights;
   // Architectural scenes (many coplanar triangles, like game levels) are seen from inside; objects
   // (nearly every triangle its own plane, like the bunny) are framed from outside.
-  const bool architectural = double(s.store->Planes().size()) < 0.8 * double(s.store->Size());
+  const bool architectural = double(s.store->PlaneCount()) < 0.8 * double(s.store->Size());
   if (architectural && !cands.empty() && cands[0].score > 0.01 * b.Diagonal())
   {
     const Cand& c = cands[0];

@@ -148,7 +148,11 @@ TEST(TriangleGridStability, TrianglesInVoxelFaces)
 {
   // A closed box symmetric about 0 plus a square in the plane x = 0 made of 32 triangles.
   auto box = arttest::BoxMesh({ -1, -1, -1 }, { 1, 1, 1 }, 4);
-  std::vector<art::Vec3> pts = box->Points();
+  std::vector<art::Vec3> pts;
+  for (size_t i = 0; i < box->PointCount(); ++i)
+  {
+    pts.push_back(box->Point(i));
+  }
   std::vector<std::array<long long, 3>> tris;
   for (size_t i = 0; i < box->Size(); ++i)
   {
