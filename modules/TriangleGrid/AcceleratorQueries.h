@@ -45,7 +45,7 @@ public:
     long long bestRec = -1;
     std::uint32_t checkedPlane = ~0u;
     bool planeCulled = false;
-    auto visit = [&](const std::uint32_t* ids, std::uint32_t n, double tExit) {
+    auto visit = [&](const auto* ids, std::uint32_t n, double tExit) {
       for (std::uint32_t k = 0; k < n; ++k)
       {
         const std::uint32_t id = ids[k];
@@ -117,7 +117,7 @@ public:
     const float* xyz = S->Vertices();
     Mailbox mb;
     bool found = false;
-    auto visit = [&](const std::uint32_t* ids, std::uint32_t n, double) {
+    auto visit = [&](const auto* ids, std::uint32_t n, double) {
       for (std::uint32_t k = 0; k < n; ++k)
       {
         if (mb.Seen(ids[k]))
@@ -151,7 +151,7 @@ public:
     const TriangleRecord* rec = S->Data();
     const float* xyz = S->Vertices();
     Mailbox mb;
-    auto visit = [&](const std::uint32_t* ids, std::uint32_t n, double) {
+    auto visit = [&](const auto* ids, std::uint32_t n, double) {
       for (std::uint32_t k = 0; k < n; ++k)
       {
         if (mb.Seen(ids[k]))
@@ -185,7 +185,7 @@ public:
     double best2 = maxDist2;
     double prune2 = std::isinf(maxDist2) ? maxDist2 : (std::sqrt(maxDist2) + slack) * (std::sqrt(maxDist2) + slack);
     Mailbox mb;
-    auto visit = [&](const std::uint32_t* ids, std::uint32_t n) {
+    auto visit = [&](const auto* ids, std::uint32_t n) {
       for (std::uint32_t k = 0; k < n; ++k)
       {
         const std::uint32_t id = ids[k];
@@ -257,7 +257,7 @@ public:
       return;
     }
     std::vector<std::uint32_t> recs;
-    auto visit = [&](const std::uint32_t* ids, std::uint32_t n) {
+    auto visit = [&](const auto* ids, std::uint32_t n) {
       ++c.voxelsVisited;
       recs.insert(recs.end(), ids, ids + n);
     };
@@ -286,7 +286,7 @@ public:
       return;
     }
     const RayPrep p(r);
-    auto visit = [&](const std::uint32_t* ids, std::uint32_t n, double) {
+    auto visit = [&](const auto* ids, std::uint32_t n, double) {
       for (std::uint32_t k = 0; k < n; ++k)
       {
         out.push_back(S->OriginalIndex(ids[k]));

@@ -28,10 +28,11 @@ Octree::Octree(std::shared_ptr<const TriangleStore> s, const AcceleratorOptions&
   Root = Box3(c - Vec3(h, h, h), c + Vec3(h, h, h));
   IdBudget = 64 * std::max<size_t>(S->Size(), 1024);
   std::vector<std::uint32_t> all = PlaneOrder(*S);
+  Lists = CellLists(S->Size());
   Nodes.push_back(ONode{ 0, 0 });
   const double lo[3] = { Root.lo.x, Root.lo.y, Root.lo.z }, hi[3] = { Root.hi.x, Root.hi.y, Root.hi.z };
   BuildNode(0, lo, hi, all, 0, 0);
-  Ids.shrink_to_fit();
+  Lists.ShrinkToFit();
 }
 
 double Octree::Cost(const std::vector<std::uint32_t>& ids) const
@@ -53,7 +54,7 @@ void Octree::BuildNode(std::uint32_t n, const double lo[3], const double hi[3], 
 {
   // `stuck` counts the levels in a row that kept every triangle of the parent: around a vertex where
   // more triangles meet than the threshold allows, splitting further never helps (2 such levels end it).
-  const bool split = depth < MaxDepth && stuck < 2 && Ids.size() < IdBudget && Cost(ids) > Thr;
+  const bool split = depth < MaxDepth && stuck < 2 && Refs < IdBudget && Cost(ids) > Thr;
   double mid[3];
   for (int a = 0; a < 3; ++a)
   {
@@ -85,8 +86,9 @@ void Octree::BuildNode(std::uint32_t n, const double lo[3], const double hi[3], 
   }
   if (!separates)
   {
-    Nodes[n] = ONode{ static_cast<std::uint32_t>(Ids.size()), static_cast<std::uint32_t>(ids.size()) };
-    Ids.insert(Ids.end(), ids.begin(), ids.end());
+    const std::uint32_t count = static_cast<std::uint32_t>(ids.size());
+    Nodes[n] = ONode{ count ? Lists.Append(ids.data(), count) : 0, count };
+    Refs += count;
     return;
   }
   const size_t parentCount = ids.size();

@@ -7,6 +7,7 @@
 #define art_Octree_h
 
 #include "AcceleratorQueries.h"
+#include "CellLists.h"
 
 #include <cmath>
 
@@ -17,7 +18,7 @@ class ADAPTIVERTTRIANGLEGRID_EXPORT Octree : public WalkingAccelerator<Octree>
 public:
   Octree(std::shared_ptr<const TriangleStore> s, const AcceleratorOptions& o);
 
-  size_t MemoryBytes() const override { return Nodes.size() * sizeof(ONode) + Ids.size() * sizeof(std::uint32_t); }
+  size_t MemoryBytes() const override { return Nodes.size() * sizeof(ONode) + Lists.MemoryBytes(); }
   std::string Name() const override;
   void VoxelBoxes(int level, std::vector<Box3>& boxes) const override;
   int Depth() const { return DepthBuilt; }
@@ -26,14 +27,13 @@ public:
   template <class Visitor>
   void Walk(const RayPrep& p, double tmin, double tmax, Visitor& visit, Counters& c) const
   {
-    const Ray r = p.Segment(tmin, tmax);
     double t0, t1;
-    if (Nodes.empty() || !Root.Clip(r, t0, t1))
+    if (Nodes.empty() || !p.Clip(Root, tmin, tmax, t0, t1))
     {
       return;
     }
     const double lo[3] = { Root.lo.x, Root.lo.y, Root.lo.z }, hi[3] = { Root.hi.x, Root.hi.y, Root.hi.z };
-    WalkNode(0, lo, hi, p, t0, t1, visit, c);
+    Lists.With([&](const auto* lists) { WalkNode(lists, 0, lo, hi, p, t0, t1, visit, c); });
   }
 
   /// Nearest-point walk (see AcceleratorQueries.h): depth first, the nearer children first.
@@ -43,7 +43,7 @@ public:
     const double lo[3] = { Root.lo.x, Root.lo.y, Root.lo.z }, hi[3] = { Root.hi.x, Root.hi.y, Root.hi.z };
     if (!Nodes.empty() && BoxDistance2(lo, hi, x) <= prune2)
     {
-      NearNode(0, lo, hi, x, prune2, visit, c);
+      Lists.With([&](const auto* lists) { NearNode(lists, 0, lo, hi, x, prune2, visit, c); });
     }
   }
 
@@ -54,14 +54,14 @@ public:
     const double lo[3] = { Root.lo.x, Root.lo.y, Root.lo.z }, hi[3] = { Root.hi.x, Root.hi.y, Root.hi.z };
     if (!Nodes.empty())
     {
-      OverlapNode(0, lo, hi, b, visit);
+      Lists.With([&](const auto* lists) { OverlapNode(lists, 0, lo, hi, b, visit); });
     }
   }
 
 private:
   struct ONode
   {
-    std::uint32_t first, count; ///< count == Internal: first is the first of 8 children
+    std::uint32_t first, count; ///< count == Internal: first is the first of 8 children; else a list offset
   };
   static constexpr std::uint32_t Internal = 0xffffffffu;
 
@@ -75,8 +75,8 @@ private:
     }
   }
 
-  template <class Visitor>
-  void NearNode(std::uint32_t n, const double lo[3], const double hi[3], const Vec3& x, const double& prune2,
+  template <class Id, class Visitor>
+  void NearNode(const Id* lists, std::uint32_t n, const double lo[3], const double hi[3], const Vec3& x, const double& prune2,
     Visitor& visit, Counters& c) const
   {
     ++c.voxelsVisited;
@@ -85,7 +85,9 @@ private:
     {
       if (node.count != 0)
       {
-        visit(Ids.data() + node.first, node.count);
+        std::uint32_t count;
+        const Id* ids = CellLists::Read(lists, node.first, count);
+        visit(ids, count);
       }
       return;
     }
@@ -110,12 +112,12 @@ private:
     {
       double clo[3], chi[3];
       ChildBox(lo, hi, order[m], clo, chi);
-      NearNode(node.first + order[m], clo, chi, x, prune2, visit, c);
+      NearNode(lists, node.first + order[m], clo, chi, x, prune2, visit, c);
     }
   }
 
-  template <class Visitor>
-  void OverlapNode(std::uint32_t n, const double lo[3], const double hi[3], const Box3& b, Visitor& visit) const
+  template <class Id, class Visitor>
+  void OverlapNode(const Id* lists, std::uint32_t n, const double lo[3], const double hi[3], const Box3& b, Visitor& visit) const
   {
     for (int a = 0; a < 3; ++a)
     {
@@ -130,7 +132,9 @@ private:
     {
       if (node.count != 0)
       {
-        visit(Ids.data() + node.first, node.count);
+        std::uint32_t count;
+        const Id* ids = CellLists::Read(lists, node.first, count);
+        visit(ids, count);
       }
       return;
     }
@@ -138,19 +142,25 @@ private:
     {
       double clo[3], chi[3];
       ChildBox(lo, hi, k, clo, chi);
-      OverlapNode(node.first + k, clo, chi, b, visit);
+      OverlapNode(lists, node.first + k, clo, chi, b, visit);
     }
   }
 
-  template <class Visitor>
-  bool WalkNode(std::uint32_t n, const double lo[3], const double hi[3], const RayPrep& p, double t0,
+  template <class Id, class Visitor>
+  bool WalkNode(const Id* lists, std::uint32_t n, const double lo[3], const double hi[3], const RayPrep& p, double t0,
     double t1, Visitor& visit, Counters& c) const
   {
     ++c.voxelsVisited;
     const ONode node = Nodes[n];
     if (node.count != Internal)
     {
-      return node.count != 0 && visit(Ids.data() + node.first, node.count, t1);
+      if (node.count == 0)
+      {
+        return false;
+      }
+      std::uint32_t count;
+      const Id* ids = CellLists::Read(lists, node.first, count);
+      return visit(ids, count, t1);
     }
     double mid[3], tm[3];
     int bits = 0;
@@ -185,7 +195,7 @@ private:
         clo[a] = high ? mid[a] : lo[a];
         chi[a] = high ? hi[a] : mid[a];
       }
-      if (WalkNode(node.first + bits, clo, chi, p, tcur, tEx, visit, c))
+      if (WalkNode(lists, node.first + bits, clo, chi, p, tcur, tEx, visit, c))
       {
         return true;
       }
@@ -205,10 +215,10 @@ private:
   void CollectBoxes(std::uint32_t n, const Vec3& lo, const Vec3& hi, int depth, int level, std::vector<Box3>& boxes) const;
 
   std::vector<ONode> Nodes;
-  std::vector<std::uint32_t> Ids;
+  CellLists Lists;
   Box3 Root;
   int Thr = 0, Weight = 0, DepthBuilt = 0;
-  size_t IdBudget = 0;
+  size_t IdBudget = 0, Refs = 0;
 };
 } // namespace art
 

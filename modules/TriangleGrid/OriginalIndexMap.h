@@ -1,10 +1,10 @@
 // OriginalIndexMap: a non-decreasing map from a store's record to its input index (cell id), kept
 // as runs where it steps by one (triangles, a few dropped) or stays (the triangles of one strip or
-// polygon), or as a plain array when runs would not be smaller.
+// polygon), or as a plain array when runs would not be smaller. A lookup starts from the run
+// that holds the block of 64 records around it, so it scans a few runs at most.
 #ifndef art_OriginalIndexMap_h
 #define art_OriginalIndexMap_h
 
-#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -17,6 +17,7 @@ public:
   void Assign(const std::vector<long long>& original)
   {
     Runs.clear();
+    Start.clear();
     Plain.clear();
     Wide.clear();
     for (size_t i = 0; i < original.size(); ++i)
@@ -36,7 +37,9 @@ public:
       }
       Runs.push_back({ static_cast<std::uint32_t>(i), 1, original[i] });
     }
-    if (Runs.size() * sizeof(Run) > original.size() * sizeof(std::uint32_t))
+    Start.clear();
+    if (Runs.size() * sizeof(Run) + (Runs.size() > 8 ? original.size() / 64 + 1 : 0) * sizeof(std::uint32_t) >
+      original.size() * sizeof(std::uint32_t))
     {
       Runs.clear();
       const bool narrow = original.empty() || original.back() <= 0xffffffffLL;
@@ -51,6 +54,17 @@ public:
           Wide.push_back(o);
         }
       }
+      return;
+    }
+    // Start[b]: the last run that begins at or before record 64 b (a few runs are just scanned).
+    std::uint32_t r = 0;
+    for (size_t b = 0; Runs.size() > 8 && b * 64 < original.size(); ++b)
+    {
+      while (r + 1 < Runs.size() && Runs[r + 1].first <= b * 64)
+      {
+        ++r;
+      }
+      Start.push_back(r);
     }
   }
 
@@ -64,14 +78,18 @@ public:
     {
       return Wide[record];
     }
-    const auto it = std::upper_bound(Runs.begin(), Runs.end(), record,
-                      [](size_t rec, const Run& r) { return rec < r.first; }) - 1;
-    return it->base + static_cast<long long>(it->step) * static_cast<long long>(record - it->first);
+    size_t r = Start.empty() ? 0 : Start[record / 64];
+    while (r + 1 < Runs.size() && Runs[r + 1].first <= record)
+    {
+      ++r;
+    }
+    const Run& run = Runs[r];
+    return run.base + static_cast<long long>(run.step) * static_cast<long long>(record - run.first);
   }
 
   size_t MemoryBytes() const
   {
-    return Runs.size() * sizeof(Run) + Plain.size() * sizeof(std::uint32_t) + Wide.size() * sizeof(long long);
+    return Runs.size() * sizeof(Run) + Start.size() * sizeof(std::uint32_t) + Plain.size() * sizeof(std::uint32_t) + Wide.size() * sizeof(long long);
   }
 
 private:
@@ -82,6 +100,7 @@ private:
     long long base;      ///< input index of the first record
   };
   std::vector<Run> Runs;
+  std::vector<std::uint32_t> Start; ///< per 64 records: the run holding the first of them
   std::vector<std::uint32_t> Plain;
   std::vector<long long> Wide;
 };

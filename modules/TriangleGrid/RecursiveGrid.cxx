@@ -96,37 +96,41 @@ void RecursiveGrid::Build(const int dims[3], int thr, int sub)
   MaxDepth = sub >= 2 ? std::min(MaxLevels - 1, int(std::floor(std::log(4096.0) / std::log(double(sub)) + 1e-9))) : 0;
   Root = PaddedBounds();
   IdBudget = 64 * std::max<size_t>(S->Size(), 1024);
-  Nodes.clear();
-  Cells.clear();
-  Ids.clear();
-  Node top;
+  Words.clear();
+  Rank.clear();
+  Entries.clear();
+  Lists = CellLists(S->Size());
+  Refs = 0;
+  Grids = 0;
   for (int a = 0; a < 3; ++a)
   {
-    top.lo[a] = Root.lo[a];
-    top.n[a] = dims[a];
-    top.cs[a] = (Root.hi[a] - Root.lo[a]) / dims[a];
-    top.invCs[a] = 1.0 / top.cs[a];
-  }
-  top.depth = 0;
-  top.firstCell = 0;
-  Nodes.push_back(top);
-  Cells.resize(static_cast<size_t>(dims[0]) * dims[1] * dims[2], Cell{ 0, 0 });
-  MaxDepthBuilt = 0;
-  for (int d = 0; d < MaxLevels; ++d)
-  {
-    for (int a = 0; a < 3; ++a)
+    TopLo[a] = Root.lo[a];
+    TopN[a] = dims[a];
+    SubN[a] = std::max(sub, 1);
+    Cs[0][a] = (Root.hi[a] - Root.lo[a]) / dims[a];
+    for (int d = 1; d < MaxLevels; ++d)
     {
-      LevelCell[d][a] = top.cs[a] / std::pow(double(std::max(sub, 1)), d);
+      Cs[d][a] = Cs[d - 1][a] / SubN[a];
+    }
+    for (int d = 0; d < MaxLevels; ++d)
+    {
+      InvCs[d][a] = 1.0 / Cs[d][a];
     }
   }
-  BuildNode(0, PlaneOrder(*S), 0);
-  Ids.shrink_to_fit();
+  MaxDepthBuilt = 0;
+  BuildGrid(0, TopLo, PlaneOrder(*S), 0);
+  Lists.ShrinkToFit();
+  Words.shrink_to_fit();
+  Rank.shrink_to_fit();
+  Entries.shrink_to_fit();
 }
 
-void RecursiveGrid::BuildNode(std::uint32_t node, const std::vector<std::uint32_t>& ids, int stuck)
+void RecursiveGrid::BuildGrid(int depth, const double lo[3], const std::vector<std::uint32_t>& ids, int stuck)
 {
-  const Node G = Nodes[node]; // copy: Nodes grows below
-  const size_t ncell = static_cast<size_t>(G.n[0]) * G.n[1] * G.n[2];
+  const int* dims = Dims(depth);
+  const double *cs = Cs[depth], *ics = InvCs[depth];
+  const size_t ncell = static_cast<size_t>(dims[0]) * dims[1] * dims[2];
+  ++Grids;
   // Bin: (cell, id) pairs, each triangle into every voxel its exact overlap test accepts.
   std::vector<std::uint32_t> count(ncell + 1, 0);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -134,42 +138,42 @@ void RecursiveGrid::BuildNode(std::uint32_t node, const std::vector<std::uint32_
   Vec3 half;
   for (int a = 0; a < 3; ++a)
   {
-    half[a] = 0.5 * G.cs[a] * (1.0 + 2 * Pad);
+    half[a] = 0.5 * cs[a] * (1.0 + 2 * Pad);
   }
   for (std::uint32_t id : ids)
   {
     const TriangleBox b = S->RecordBox(id);
-    int lo[3], hi[3];
+    int from[3], to[3];
     for (int a = 0; a < 3; ++a)
     {
-      const double slack = Pad * G.cs[a];
-      lo[a] = std::max(0, int(std::floor((double(b.lo[a]) - slack - G.lo[a]) * G.invCs[a])));
-      hi[a] = std::min(G.n[a] - 1, int(std::floor((double(b.hi[a]) + slack - G.lo[a]) * G.invCs[a])));
+      const double slack = Pad * cs[a];
+      from[a] = std::max(0, int(std::floor((double(b.lo[a]) - slack - lo[a]) * ics[a])));
+      to[a] = std::min(dims[a] - 1, int(std::floor((double(b.hi[a]) + slack - lo[a]) * ics[a])));
     }
-    const bool single = lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2];
+    const bool single = from[0] == to[0] && from[1] == to[1] && from[2] == to[2];
     const Vec3 v0 = S->Vertex(id, 0), v1 = S->Vertex(id, 1), v2 = S->Vertex(id, 2);
-    for (int z = lo[2]; z <= hi[2]; ++z)
+    for (int z = from[2]; z <= to[2]; ++z)
     {
-      for (int y = lo[1]; y <= hi[1]; ++y)
+      for (int y = from[1]; y <= to[1]; ++y)
       {
-        for (int x = lo[0]; x <= hi[0]; ++x)
+        for (int x = from[0]; x <= to[0]; ++x)
         {
           if (!single)
           {
-            const Vec3 c(G.lo[0] + (x + 0.5) * G.cs[0], G.lo[1] + (y + 0.5) * G.cs[1], G.lo[2] + (z + 0.5) * G.cs[2]);
+            const Vec3 c(lo[0] + (x + 0.5) * cs[0], lo[1] + (y + 0.5) * cs[1], lo[2] + (z + 0.5) * cs[2]);
             if (!TriBoxOverlap(c, half, v0, v1, v2))
             {
               continue;
             }
           }
-          const std::uint32_t cell = static_cast<std::uint32_t>((size_t(z) * G.n[1] + y) * G.n[0] + x);
+          const std::uint32_t cell = static_cast<std::uint32_t>((size_t(z) * dims[1] + y) * dims[0] + x);
           pairs.emplace_back(cell, id);
           ++count[cell];
         }
       }
     }
   }
-  // Counting sort by cell; ids stay in store order, so coplanar triangles stay neighbours.
+  // Counting sort by cell; ids keep their plane order, so coplanar triangles stay neighbours.
   std::vector<std::uint32_t> start(ncell + 1, 0);
   for (size_t c = 0; c < ncell; ++c)
   {
@@ -186,30 +190,52 @@ void RecursiveGrid::BuildNode(std::uint32_t node, const std::vector<std::uint32_
   pairs.clear();
   pairs.shrink_to_fit();
 
+  // This grid's occupancy words and entries, before any subgrid takes its own.
+  const std::uint32_t block = static_cast<std::uint32_t>(Words.size());
+  const size_t nwords = (ncell + 63) / 64;
+  Words.resize(Words.size() + nwords, 0);
+  Rank.resize(Rank.size() + nwords, 0);
+  const std::uint32_t first = static_cast<std::uint32_t>(Entries.size());
+  std::uint32_t entry = first;
+  for (size_t c = 0; c < ncell; ++c)
+  {
+    if (c % 64 == 0)
+    {
+      Rank[block + c / 64] = entry;
+    }
+    if (count[c] > 0)
+    {
+      Words[block + c / 64] |= 1ull << (c % 64);
+      ++entry;
+    }
+  }
+  Entries.resize(entry, 0);
+  entry = first;
+
   std::vector<std::uint32_t> sub;
   for (size_t c = 0; c < ncell; ++c)
   {
     const std::uint32_t n = count[c];
-    Cell cell{ 0, 0 };
+    if (n == 0)
+    {
+      continue;
+    }
+    const std::uint32_t at = entry++;
     // A voxel that kept every triangle of its parent is `stuck` once more: where more triangles meet
     // at a vertex than the threshold allows, splitting never separates them (N=2: 2 tries, else 1).
-    const int cellStuck = node != 0 && n == ids.size() ? stuck + 1 : 0;
-    const bool split = Sub >= 2 && n > std::uint32_t(Thr) && G.depth < MaxDepth && Ids.size() < IdBudget &&
+    const int cellStuck = depth != 0 && n == ids.size() ? stuck + 1 : 0;
+    const bool split = Sub >= 2 && n > std::uint32_t(Thr) && depth < MaxDepth && Refs < IdBudget &&
       cellStuck <= (Sub == 2 ? 1 : 0);
     if (split)
     {
-      // A child grid of Sub^3 over this voxel; kept only if it separates something.
-      Node ch;
-      const int x = int(c % G.n[0]), y = int((c / G.n[0]) % G.n[1]), z = int(c / (size_t(G.n[0]) * G.n[1]));
-      const int idx[3] = { x, y, z };
+      // A subgrid of Sub^3 over this voxel; kept only if it separates something.
+      const int idx[3] = { int(c % dims[0]), int((c / dims[0]) % dims[1]), int(c / (size_t(dims[0]) * dims[1])) };
+      double clo[3];
       for (int a = 0; a < 3; ++a)
       {
-        ch.lo[a] = G.lo[a] + idx[a] * G.cs[a];
-        ch.n[a] = Sub;
-        ch.cs[a] = G.cs[a] / Sub;
-        ch.invCs[a] = 1.0 / ch.cs[a];
+        clo[a] = lo[a] + idx[a] * cs[a];
       }
-      ch.depth = G.depth + 1;
+      const double* ccs = Cs[depth + 1];
       // Does any triangle fail to reach every subvoxel? If all do, splitting only multiplies work.
       bool separates = false;
       for (std::uint32_t k = start[c]; k < start[c + 1] && !separates; ++k)
@@ -217,65 +243,62 @@ void RecursiveGrid::BuildNode(std::uint32_t node, const std::vector<std::uint32_
         const TriangleBox b = S->RecordBox(sorted[k]);
         for (int a = 0; a < 3 && !separates; ++a)
         {
-          separates = double(b.lo[a]) > ch.lo[a] + ch.cs[a] || double(b.hi[a]) < ch.lo[a] + (Sub - 1) * ch.cs[a];
+          separates = double(b.lo[a]) > clo[a] + ccs[a] || double(b.hi[a]) < clo[a] + (Sub - 1) * ccs[a];
         }
       }
       if (separates)
       {
-        ch.firstCell = static_cast<std::uint32_t>(Cells.size());
-        const std::uint32_t childIndex = static_cast<std::uint32_t>(Nodes.size());
-        Nodes.push_back(ch);
-        Cells.resize(Cells.size() + size_t(Sub) * Sub * Sub, Cell{ 0, 0 });
-        MaxDepthBuilt = std::max(MaxDepthBuilt, ch.depth);
+        MaxDepthBuilt = std::max(MaxDepthBuilt, depth + 1);
+        Entries[at] = static_cast<std::uint32_t>(Words.size()) | Child;
         sub.assign(sorted.begin() + start[c], sorted.begin() + start[c + 1]);
-        BuildNode(childIndex, sub, cellStuck);
-        cell = Cell{ childIndex, Child };
-        Cells[G.firstCell + c] = cell;
+        BuildGrid(depth + 1, clo, sub, cellStuck);
         continue;
       }
     }
-    if (n > 0)
-    {
-      cell.begin = static_cast<std::uint32_t>(Ids.size());
-      cell.count = n;
-      Ids.insert(Ids.end(), sorted.begin() + start[c], sorted.begin() + start[c + 1]);
-    }
-    Cells[G.firstCell + c] = cell;
+    Entries[at] = Lists.Append(sorted.data() + start[c], n);
+    Refs += n;
   }
 }
 
 size_t RecursiveGrid::MemoryBytes() const
 {
-  return Nodes.size() * sizeof(Node) + Cells.size() * sizeof(Cell) + Ids.size() * sizeof(std::uint32_t);
+  return Words.size() * sizeof(std::uint64_t) + Rank.size() * sizeof(std::uint32_t) +
+    Entries.size() * sizeof(std::uint32_t) + Lists.MemoryBytes();
 }
 
 void RecursiveGrid::VoxelBoxes(int level, std::vector<Box3>& boxes) const
 {
   boxes.clear();
-  if (!Nodes.empty())
+  if (!Words.empty())
   {
-    CollectBoxes(0, level, boxes);
+    CollectBoxes(0, 0, TopLo, level, boxes);
   }
 }
 
-void RecursiveGrid::CollectBoxes(std::uint32_t node, int level, std::vector<Box3>& boxes) const
+void RecursiveGrid::CollectBoxes(
+  std::uint32_t block, int depth, const double lo[3], int level, std::vector<Box3>& boxes) const
 {
-  const Node& G = Nodes[node];
-  for (int z = 0; z < G.n[2]; ++z)
+  const int* n = Dims(depth);
+  const double* cs = Cs[depth];
+  for (int z = 0; z < n[2]; ++z)
   {
-    for (int y = 0; y < G.n[1]; ++y)
+    for (int y = 0; y < n[1]; ++y)
     {
-      for (int x = 0; x < G.n[0]; ++x)
+      for (int x = 0; x < n[0]; ++x)
       {
-        const Cell& c = Cells[G.firstCell + (size_t(z) * G.n[1] + y) * G.n[0] + x];
-        if (c.count == Child && G.depth < level)
+        const std::uint32_t e = EntryOf(block, (std::uint64_t(z) * n[1] + y) * n[0] + x);
+        if (e == Empty)
         {
-          CollectBoxes(c.begin, level, boxes);
+          continue;
         }
-        else if (c.count != 0)
+        const double clo[3] = { lo[0] + x * cs[0], lo[1] + y * cs[1], lo[2] + z * cs[2] };
+        if (e & Child && depth < level)
         {
-          const Vec3 lo(G.lo[0] + x * G.cs[0], G.lo[1] + y * G.cs[1], G.lo[2] + z * G.cs[2]);
-          boxes.emplace_back(lo, lo + Vec3(G.cs[0], G.cs[1], G.cs[2]));
+          CollectBoxes(e & ~Child, depth + 1, clo, level, boxes);
+        }
+        else
+        {
+          boxes.emplace_back(Vec3(clo[0], clo[1], clo[2]), Vec3(clo[0] + cs[0], clo[1] + cs[1], clo[2] + cs[2]));
         }
       }
     }
@@ -285,9 +308,8 @@ void RecursiveGrid::CollectBoxes(std::uint32_t node, int level, std::vector<Box3
 std::string RecursiveGrid::Name() const
 {
   char buf[128];
-  std::snprintf(buf, sizeof buf, "R[%d,%d]%s top %dx%dx%d depth %d", Thr, Sub, TopGrid ? "" : " no-top",
-    Nodes.empty() ? 0 : Nodes[0].n[0], Nodes.empty() ? 0 : Nodes[0].n[1], Nodes.empty() ? 0 : Nodes[0].n[2],
-    MaxDepthBuilt);
+  std::snprintf(buf, sizeof buf, "R[%d,%d]%s top %dx%dx%d depth %d", Thr, Sub, TopGrid ? "" : " no-top", TopN[0],
+    TopN[1], TopN[2], MaxDepthBuilt);
   return buf;
 }
 } // namespace art

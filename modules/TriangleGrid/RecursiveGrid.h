@@ -1,13 +1,16 @@
 // RecursiveGrid: the regular recursive grid R[VOX_NTRG_THR, N_SUB_VOXELS] (Dmitriev, "Efficiency
 // issues on Ray Tracing Machine", section 3): a top-level uniform grid sized from the scene's
 // uniformity; a voxel holding more than the threshold splits into N^3 subvoxels, to any depth.
-// Traversal is Amanatides & Woo's 3D-DDA at every level; the per-axis steps tDelta depend only on
-// the depth (all voxels of one depth are equal), so they are computed once per ray and reused in
-// every equally subdivided neighbour.
+// Traversal is Amanatides & Woo's 3D-DDA at every level; the per-axis steps depend only on the
+// depth (all voxels of one depth are equal).
+// Layout: a grid's cells are one bit each (occupied or not) in 64-bit words with the rank of
+// each word's first occupied cell, so an empty cell costs a bit test in a word that stays in
+// cache; an occupied cell has one 32-bit entry, a list offset (CellLists) or a subgrid.
 #ifndef art_RecursiveGrid_h
 #define art_RecursiveGrid_h
 
 #include "AcceleratorQueries.h"
+#include "CellLists.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,9 +28,10 @@ public:
 
   int Threshold() const { return Thr; }
   int Subdivisions() const { return Sub; }
-  int TopDims(int a) const { return Nodes.empty() ? 0 : Nodes[0].n[a]; }
+  int TopDims(int a) const { return TopN[a]; }
   int Depth() const { return MaxDepthBuilt; }
-  size_t NodeCount() const { return Nodes.size(); }
+  /// Grids: the top one and every subdivided voxel's.
+  size_t NodeCount() const { return Grids; }
   double Uniformity() const { return Uniform; }
   /// The (padded) box the top-level grid spans.
   Box3 GridBounds() const { return Root; }
@@ -37,36 +41,21 @@ public:
   template <class Visitor>
   void Walk(const RayPrep& p, double tmin, double tmax, Visitor& visit, Counters& c) const
   {
-    if (Nodes.empty())
-    {
-      return;
-    }
-    const Ray r = p.Segment(tmin, tmax);
     double t0, t1;
-    if (!Root.Clip(r, t0, t1))
+    if (Words.empty() || !p.Clip(Root, tmin, tmax, t0, t1))
     {
       return;
     }
-    // The DDA steps of every depth, once per ray.
-    double delta[MaxLevels][3];
-    for (int d = 0; d <= MaxDepthBuilt; ++d)
-    {
-      for (int a = 0; a < 3; ++a)
-      {
-        delta[d][a] = p.dir[a] == 0.0 ? std::numeric_limits<double>::infinity()
-                                      : std::fabs(LevelCell[d][a] * p.inv[a]);
-      }
-    }
-    WalkNode(0, p, t0, t1, delta, visit, c);
+    Lists.With([&](const auto* lists) { WalkGrid(lists, 0, 0, TopLo, t0, t1, p, visit, c); });
   }
 
   /// Nearest-point walk (see AcceleratorQueries.h): rings of growing radius around x's cell.
   template <class Visitor>
   void Near(const Vec3& x, const double& prune2, Visitor& visit, Counters& c) const
   {
-    if (!Nodes.empty())
+    if (!Words.empty())
     {
-      NearNode(0, x, prune2, visit, c);
+      Lists.With([&](const auto* lists) { NearGrid(lists, 0, 0, TopLo, x, prune2, visit, c); });
     }
   }
 
@@ -74,31 +63,38 @@ public:
   template <class Visitor>
   void Overlap(const Box3& b, Visitor& visit) const
   {
-    if (!Nodes.empty())
+    if (!Words.empty())
     {
-      OverlapNode(0, b, visit);
+      Lists.With([&](const auto* lists) { OverlapGrid(lists, 0, 0, TopLo, b, visit); });
     }
   }
 
 protected:
-  struct Node
-  {
-    double lo[3], cs[3], invCs[3];
-    int n[3];
-    std::uint32_t firstCell;
-    int depth;
-  };
-  struct Cell
-  {
-    std::uint32_t begin, count; ///< count == Child: begin is a node index
-  };
-  static constexpr std::uint32_t Child = 0xffffffffu;
+  static constexpr std::uint32_t Child = 0x80000000u; ///< entry flag: the rest is a grid's first word
+  static constexpr std::uint32_t Empty = 0xffffffffu;
 
   RecursiveGrid(std::shared_ptr<const TriangleStore> s) : WalkingAccelerator<RecursiveGrid>(std::move(s)) {}
   /// Builds with the given top-level dimensions; voxels over `thr` split into sub^3 (sub < 2: never).
   void Build(const int dims[3], int thr, int sub);
   static void ChooseDims(const Box3& box, double cells, int dims[3]);
   Box3 PaddedBounds() const;
+
+  const int* Dims(int depth) const { return depth == 0 ? TopN : SubN; }
+
+  static int PopCount(std::uint64_t x)
+  {
+    x = x - ((x >> 1) & 0x5555555555555555ull);
+    x = (x & 0x3333333333333333ull) + ((x >> 2) & 0x3333333333333333ull);
+    x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0full;
+    return static_cast<int>((x * 0x0101010101010101ull) >> 56);
+  }
+
+  /// The entry of cell `idx` of the grid whose words start at `block`, or Empty.
+  std::uint32_t EntryOf(std::uint32_t block, std::uint64_t idx) const
+  {
+    const std::uint64_t w = Words[block + (idx >> 6)], bit = 1ull << (idx & 63);
+    return w & bit ? Entries[Rank[block + (idx >> 6)] + PopCount(w & (bit - 1))] : Empty;
+  }
 
   /// floor(v) clamped to [0, n - 1] (NaN gives 0), without a call to floor.
   static int CellOf(double v, int n)
@@ -110,69 +106,72 @@ protected:
     return v >= n ? n - 1 : static_cast<int>(v);
   }
 
-  template <class Visitor>
-  bool WalkNode(std::uint32_t g, const RayPrep& p, double t0, double t1, const double (*delta)[3],
-    Visitor& visit, Counters& c) const
+  template <class Id, class Visitor>
+  bool WalkGrid(const Id* lists, std::uint32_t block, int depth, const double lo[3], double t0, double t1,
+    const RayPrep& p, Visitor& visit, Counters& c) const
   {
-    const Node& G = Nodes[g];
-    int i[3], step[3];
+    const int* n = Dims(depth);
+    const double *cs = Cs[depth], *ics = InvCs[depth];
+    int i[3], step[3], out[3];
     double tNext[3], tDelta[3];
     for (int a = 0; a < 3; ++a)
     {
       const double d = p.dir[a];
-      const double x = p.org[a] + d * t0;
-      const int k = CellOf((x - G.lo[a]) * G.invCs[a], G.n[a]);
+      const int k = CellOf((p.org[a] + d * t0 - lo[a]) * ics[a], n[a]);
       i[a] = k;
-      tDelta[a] = delta[G.depth][a];
-      if (d > 0)
-      {
-        step[a] = 1;
-        tNext[a] = (G.lo[a] + (k + 1) * G.cs[a] - p.org[a]) * p.inv[a];
-      }
-      else if (d < 0)
-      {
-        step[a] = -1;
-        tNext[a] = (G.lo[a] + k * G.cs[a] - p.org[a]) * p.inv[a];
-      }
-      else
-      {
-        step[a] = 0;
-        tNext[a] = std::numeric_limits<double>::infinity();
-      }
+      tDelta[a] = d == 0.0 ? std::numeric_limits<double>::infinity() : std::fabs(cs[a] * p.inv[a]);
+      step[a] = d > 0 ? 1 : (d < 0 ? -1 : 0);
+      out[a] = d > 0 ? n[a] : -1;
+      tNext[a] = d > 0 ? (lo[a] + (k + 1) * cs[a] - p.org[a]) * p.inv[a]
+                       : (d < 0 ? (lo[a] + k * cs[a] - p.org[a]) * p.inv[a] : std::numeric_limits<double>::infinity());
     }
+    // The linear cell index moves by a per-axis stride; an empty cell costs a bit test.
+    const long long stride[3] = { step[0], static_cast<long long>(step[1]) * n[0],
+      static_cast<long long>(step[2]) * n[0] * n[1] };
+    long long idx = (static_cast<long long>(i[2]) * n[1] + i[1]) * n[0] + i[0];
+    const std::uint64_t* words = Words.data() + block;
+    const std::uint32_t* rank = Rank.data() + block;
     double tEnter = t0;
-    const Cell* cells = Cells.data() + G.firstCell;
-    // The linear cell index moves by a per-axis stride; empty cells cost one load and a compare.
-    const long long stride[3] = { step[0], static_cast<long long>(step[1]) * G.n[0],
-      static_cast<long long>(step[2]) * G.n[0] * G.n[1] };
-    long long idx = (static_cast<long long>(i[2]) * G.n[1] + i[1]) * G.n[0] + i[0];
     std::uint64_t visited = 0;
     bool stop = false;
     for (;;)
     {
       ++visited;
-      const Cell& cell = cells[idx];
-      const int a = tNext[0] < tNext[1] ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2);
+      // The axis of the nearest crossing from a table, without a branch: the choice of
+      // tNext[0] < tNext[1] ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2).
+      static constexpr signed char AxisOf[8] = { 2, 2, 2, 0, 1, 2, 1, 0 };
+      const int a = AxisOf[int(tNext[0] < tNext[1]) | int(tNext[0] < tNext[2]) << 1 | int(tNext[1] < tNext[2]) << 2];
       const double tExit = std::min(tNext[a], t1);
-      if (cell.count == Child)
+      const std::uint64_t w = words[idx >> 6], bit = 1ull << (idx & 63);
+      if (w & bit)
       {
-        if (WalkNode(cell.begin, p, tEnter, tExit, delta, visit, c))
+        const std::uint32_t e = Entries[rank[idx >> 6] + PopCount(w & (bit - 1))];
+        if (e & Child)
         {
-          stop = true;
-          break;
+          const double clo[3] = { lo[0] + i[0] * cs[0], lo[1] + i[1] * cs[1], lo[2] + i[2] * cs[2] };
+          if (WalkGrid(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c))
+          {
+            stop = true;
+            break;
+          }
         }
-      }
-      else if (cell.count != 0 && visit(Ids.data() + cell.begin, cell.count, tExit))
-      {
-        stop = true;
-        break;
+        else
+        {
+          std::uint32_t count;
+          const Id* ids = CellLists::Read(lists, e, count);
+          if (visit(ids, count, tExit))
+          {
+            stop = true;
+            break;
+          }
+        }
       }
       if (!(tNext[a] < t1))
       {
         break;
       }
       i[a] += step[a];
-      if (i[a] < 0 || i[a] >= G.n[a])
+      if (i[a] == out[a])
       {
         break;
       }
@@ -184,170 +183,33 @@ protected:
     return stop;
   }
 
-  // Searches the grid node g ring by ring (Chebyshev rings of cells around the cell nearest x): a
-  // ring can hold nothing nearer than the nearest of its faces' slabs, so the rings stop once that
-  // bound passes the best distance so far; within a ring, cells beyond it are skipped too.
-  template <class Visitor>
-  void NearNode(std::uint32_t g, const Vec3& x, const double& prune2, Visitor& visit, Counters& c) const
-  {
-    const Node& G = Nodes[g];
-    const Cell* cells = Cells.data() + G.firstCell;
-    int ci[3], maxR = 0;
-    double out2[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      const double hi = G.lo[a] + G.n[a] * G.cs[a];
-      const double o = x[a] < G.lo[a] ? G.lo[a] - x[a] : (x[a] > hi ? x[a] - hi : 0.0);
-      out2[a] = o * o;
-      const double f = std::floor((x[a] - G.lo[a]) * G.invCs[a]);
-      ci[a] = f < 0 ? 0 : (f >= G.n[a] ? G.n[a] - 1 : static_cast<int>(f));
-      maxR = std::max(maxR, std::max(ci[a], G.n[a] - 1 - ci[a]));
-    }
-    auto cell = [&](int i, int j, int k) {
-      const double lo[3] = { G.lo[0] + i * G.cs[0], G.lo[1] + j * G.cs[1], G.lo[2] + k * G.cs[2] };
-      const double hi[3] = { lo[0] + G.cs[0], lo[1] + G.cs[1], lo[2] + G.cs[2] };
-      if (BoxDistance2(lo, hi, x) > prune2)
-      {
-        return;
-      }
-      ++c.voxelsVisited;
-      const Cell& cl = cells[(static_cast<long long>(k) * G.n[1] + j) * G.n[0] + i];
-      if (cl.count == Child)
-      {
-        NearNode(cl.begin, x, prune2, visit, c);
-      }
-      else if (cl.count != 0)
-      {
-        visit(Ids.data() + cl.begin, cl.count);
-      }
-    };
-    cell(ci[0], ci[1], ci[2]);
-    for (int r = 1; r <= maxR; ++r)
-    {
-      double face2[3][2], gap2[3][2];
-      double ring2 = std::numeric_limits<double>::infinity();
-      for (int a = 0; a < 3; ++a)
-      {
-        for (int s = 0; s < 2; ++s)
-        {
-          const int idx = ci[a] + (s ? r : -r);
-          face2[a][s] = std::numeric_limits<double>::infinity();
-          if (idx < 0 || idx >= G.n[a])
-          {
-            continue;
-          }
-          const double gap = std::max(0.0, s ? G.lo[a] + idx * G.cs[a] - x[a] : x[a] - (G.lo[a] + (idx + 1) * G.cs[a]));
-          gap2[a][s] = gap * gap;
-          face2[a][s] = gap2[a][s] + out2[(a + 1) % 3] + out2[(a + 2) % 3];
-          ring2 = std::min(ring2, face2[a][s]);
-        }
-      }
-      if (ring2 > prune2)
-      {
-        break; // every further ring lies further still
-      }
-      // Face (a, s) of the ring: axis a at ci[a] -+ r, axes before a strictly inside the ring,
-      // axes after it across the whole ring, so each cell of the ring is visited once.
-      for (int a = 0; a < 3; ++a)
-      {
-        for (int s = 0; s < 2; ++s)
-        {
-          const int idx = ci[a] + (s ? r : -r);
-          if (idx < 0 || idx >= G.n[a] || face2[a][s] > prune2)
-          {
-            continue;
-          }
-          int lo[3], hi[3];
-          for (int b = 0; b < 3; ++b)
-          {
-            if (b == a)
-            {
-              lo[b] = hi[b] = idx;
-              continue;
-            }
-            const int in = b < a ? 1 : 0;
-            lo[b] = std::max(ci[b] - r + in, 0);
-            hi[b] = std::min(ci[b] + r - in, G.n[b] - 1);
-            // Along b a cell can hold something nearer only within this reach of x: the face's own
-            // distance along a and x's distance outside the grid along the third axis are spent.
-            const double reach = std::sqrt(std::max(0.0, prune2 - gap2[a][s] - out2[3 - a - b]));
-            if (reach < std::numeric_limits<double>::infinity())
-            {
-              const double l = std::floor((x[b] - reach - G.lo[b]) * G.invCs[b]);
-              const double h = std::floor((x[b] + reach - G.lo[b]) * G.invCs[b]);
-              lo[b] = l > lo[b] ? static_cast<int>(std::min(l, double(G.n[b]))) : lo[b];
-              hi[b] = h < hi[b] ? static_cast<int>(std::max(h, -1.0)) : hi[b];
-            }
-          }
-          for (int k = lo[2]; k <= hi[2]; ++k)
-          {
-            for (int j = lo[1]; j <= hi[1]; ++j)
-            {
-              for (int i = lo[0]; i <= hi[0]; ++i)
-              {
-                cell(i, j, k);
-              }
-            }
-          }
-        }
-      }
-    }
-  }
+  template <class Id, class Visitor>
+  void NearGrid(const Id* lists, std::uint32_t block, int depth, const double lo[3], const Vec3& x,
+    const double& prune2, Visitor& visit, Counters& c) const;
+  template <class Id, class Visitor>
+  void OverlapGrid(const Id* lists, std::uint32_t block, int depth, const double lo[3], const Box3& b, Visitor& visit) const;
 
-  template <class Visitor>
-  void OverlapNode(std::uint32_t g, const Box3& b, Visitor& visit) const
-  {
-    const Node& G = Nodes[g];
-    int lo[3], hi[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      // A little wider than the box: a triangle in a voxel face was put in both voxels, and the
-      // exact test follows anyway.
-      const double l = std::floor((b.lo[a] - G.lo[a]) * G.invCs[a] - 1e-6);
-      const double h = std::floor((b.hi[a] - G.lo[a]) * G.invCs[a] + 1e-6);
-      if (h < 0 || l >= G.n[a])
-      {
-        return;
-      }
-      lo[a] = l < 0 ? 0 : static_cast<int>(l);
-      hi[a] = h >= G.n[a] ? G.n[a] - 1 : static_cast<int>(h);
-    }
-    const Cell* cells = Cells.data() + G.firstCell;
-    for (int k = lo[2]; k <= hi[2]; ++k)
-    {
-      for (int j = lo[1]; j <= hi[1]; ++j)
-      {
-        for (int i = lo[0]; i <= hi[0]; ++i)
-        {
-          const Cell& cl = cells[(static_cast<long long>(k) * G.n[1] + j) * G.n[0] + i];
-          if (cl.count == Child)
-          {
-            OverlapNode(cl.begin, b, visit);
-          }
-          else if (cl.count != 0)
-          {
-            visit(Ids.data() + cl.begin, cl.count);
-          }
-        }
-      }
-    }
-  }
-
-  std::vector<Node> Nodes;
-  std::vector<Cell> Cells;
-  std::vector<std::uint32_t> Ids;
-  double LevelCell[MaxLevels][3] = {};
+  std::vector<std::uint64_t> Words; ///< occupancy, one bit per cell; a grid's words are contiguous
+  std::vector<std::uint32_t> Rank;  ///< per word: the entry of its first occupied cell
+  std::vector<std::uint32_t> Entries;
+  CellLists Lists;
+  double Cs[MaxLevels][3] = {}, InvCs[MaxLevels][3] = {}; ///< cell size per depth
+  double TopLo[3] = { 0, 0, 0 };
+  int TopN[3] = { 0, 0, 0 }, SubN[3] = { 0, 0, 0 };
   Box3 Root;
   int Thr = 0, Sub = 0, MaxDepthBuilt = 0;
   bool TopGrid = true;
   double Uniform = 1.0;
+  size_t Grids = 0;
 
 private:
-  void BuildNode(std::uint32_t node, const std::vector<std::uint32_t>& ids, int stuck);
-  void CollectBoxes(std::uint32_t node, int level, std::vector<Box3>& boxes) const;
+  void BuildGrid(int depth, const double lo[3], const std::vector<std::uint32_t>& ids, int stuck);
+  void CollectBoxes(std::uint32_t block, int depth, const double lo[3], int level, std::vector<Box3>& boxes) const;
   int MaxDepth = 0;
-  size_t IdBudget = 0;
+  size_t IdBudget = 0, Refs = 0;
 };
 } // namespace art
+
+#include "RecursiveGridSearch.h"
 
 #endif

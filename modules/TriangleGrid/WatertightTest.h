@@ -4,9 +4,11 @@
 #ifndef art_WatertightTest_h
 #define art_WatertightTest_h
 
+#include "Box3.h"
 #include "Ray.h"
 #include "TriangleStore.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -48,15 +50,35 @@ struct RayPrep
     invLen = 1.0 / std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
   }
 
-  /// The ray again, limited to [tmin, tmax] (what a structure clips to its box).
-  Ray Segment(double tmin, double tmax) const
+  /// Clips [tmin, tmax] to the box as Box3::Clip does (a zero direction component keeps the
+  /// interval when the origin lies within that slab). False when the ray misses it.
+  bool Clip(const Box3& b, double tmin, double tmax, double& t0, double& t1) const
   {
-    Ray r;
-    r.org = Vec3(org[0], org[1], org[2]);
-    r.dir = Vec3(dir[0], dir[1], dir[2]);
-    r.tmin = tmin;
-    r.tmax = tmax;
-    return r;
+    t0 = tmin;
+    t1 = tmax;
+    for (int a = 0; a < 3; ++a)
+    {
+      if (dir[a] == 0.0)
+      {
+        if (org[a] < b.lo[a] || org[a] > b.hi[a])
+        {
+          return false;
+        }
+        continue;
+      }
+      double ta = (b.lo[a] - org[a]) * inv[a], tb = (b.hi[a] - org[a]) * inv[a];
+      if (ta > tb)
+      {
+        std::swap(ta, tb);
+      }
+      t0 = std::max(t0, ta);
+      t1 = std::min(t1, tb);
+      if (!(t0 <= t1))
+      {
+        return false;
+      }
+    }
+    return true;
   }
 };
 
