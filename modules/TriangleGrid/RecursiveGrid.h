@@ -106,81 +106,166 @@ protected:
     return v >= n ? n - 1 : static_cast<int>(v);
   }
 
+  /// The 3D-DDA through one grid (the top one or a voxel's subgrid) from t0 to t1. Per axis the
+  /// next crossing, its step in t and in the linear cell index, and how many cells are left
+  /// before the grid's side are kept in registers; the axis of the nearest crossing is taken as
+  /// tNext[0] < tNext[1] ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2).
   template <class Id, class Visitor>
   bool WalkGrid(const Id* lists, std::uint32_t block, int depth, const double lo[3], double t0, double t1,
     const RayPrep& p, Visitor& visit, Counters& c) const
   {
     const int* n = Dims(depth);
     const double *cs = Cs[depth], *ics = InvCs[depth];
-    int i[3], step[3], out[3];
-    double tNext[3], tDelta[3];
+    const long long stride[3] = { 1, n[0], static_cast<long long>(n[0]) * n[1] };
+    double tn[3], dt[3];
+    long long di[3], idx = 0;
+    int left[3], at[3];
     for (int a = 0; a < 3; ++a)
     {
       const double d = p.dir[a];
       const int k = CellOf((p.org[a] + d * t0 - lo[a]) * ics[a], n[a]);
-      i[a] = k;
-      tDelta[a] = d == 0.0 ? std::numeric_limits<double>::infinity() : std::fabs(cs[a] * p.inv[a]);
-      step[a] = d > 0 ? 1 : (d < 0 ? -1 : 0);
-      out[a] = d > 0 ? n[a] : -1;
-      tNext[a] = d > 0 ? (lo[a] + (k + 1) * cs[a] - p.org[a]) * p.inv[a]
-                       : (d < 0 ? (lo[a] + k * cs[a] - p.org[a]) * p.inv[a] : std::numeric_limits<double>::infinity());
+      at[a] = k;
+      idx += k * stride[a];
+      if (d > 0)
+      {
+        tn[a] = (lo[a] + (k + 1) * cs[a] - p.org[a]) * p.inv[a];
+        dt[a] = cs[a] * p.inv[a];
+        di[a] = stride[a];
+        left[a] = n[a] - 1 - k;
+      }
+      else if (d < 0)
+      {
+        tn[a] = (lo[a] + k * cs[a] - p.org[a]) * p.inv[a];
+        dt[a] = -(cs[a] * p.inv[a]);
+        di[a] = -stride[a];
+        left[a] = k;
+      }
+      else
+      {
+        tn[a] = dt[a] = std::numeric_limits<double>::infinity();
+        di[a] = 0;
+        left[a] = 0;
+      }
     }
-    // The linear cell index moves by a per-axis stride; an empty cell costs a bit test.
-    const long long stride[3] = { step[0], static_cast<long long>(step[1]) * n[0],
-      static_cast<long long>(step[2]) * n[0] * n[1] };
-    long long idx = (static_cast<long long>(i[2]) * n[1] + i[1]) * n[0] + i[0];
+    double tx = tn[0], ty = tn[1], tz = tn[2], tEnter = t0;
+    int lx = left[0], ly = left[1], lz = left[2];
     const std::uint64_t* words = Words.data() + block;
-    const std::uint32_t* rank = Rank.data() + block;
-    double tEnter = t0;
     std::uint64_t visited = 0;
     bool stop = false;
     for (;;)
     {
       ++visited;
-      // The axis of the nearest crossing from a table, without a branch: the choice of
-      // tNext[0] < tNext[1] ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2).
-      static constexpr signed char AxisOf[8] = { 2, 2, 2, 0, 1, 2, 1, 0 };
-      const int a = AxisOf[int(tNext[0] < tNext[1]) | int(tNext[0] < tNext[2]) << 1 | int(tNext[1] < tNext[2]) << 2];
-      const double tExit = std::min(tNext[a], t1);
-      const std::uint64_t w = words[idx >> 6], bit = 1ull << (idx & 63);
-      if (w & bit)
+      const std::uint64_t w = words[idx >> 6];
+      if ((w >> (idx & 63)) & 1)
       {
-        const std::uint32_t e = Entries[rank[idx >> 6] + PopCount(w & (bit - 1))];
+        const double tExit = std::min(std::min(tx, std::min(ty, tz)), t1);
+        const std::uint32_t e = Entries[Rank[block + (idx >> 6)] + PopCount(w & ((1ull << (idx & 63)) - 1))];
         if (e & Child)
         {
-          const double clo[3] = { lo[0] + i[0] * cs[0], lo[1] + i[1] * cs[1], lo[2] + i[2] * cs[2] };
-          if (WalkGrid(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c))
-          {
-            stop = true;
-            break;
-          }
+          // The cell's coordinates from the cells left along each axis.
+          const int cx = p.dir[0] > 0 ? n[0] - 1 - lx : (p.dir[0] < 0 ? lx : at[0]);
+          const int cy = p.dir[1] > 0 ? n[1] - 1 - ly : (p.dir[1] < 0 ? ly : at[1]);
+          const int cz = p.dir[2] > 0 ? n[2] - 1 - lz : (p.dir[2] < 0 ? lz : at[2]);
+          const double clo[3] = { lo[0] + cx * cs[0], lo[1] + cy * cs[1], lo[2] + cz * cs[2] };
+          stop = Sub == 2 ? WalkOctants(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c)
+                          : WalkGrid(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c);
         }
         else
         {
           std::uint32_t count;
           const Id* ids = CellLists::Read(lists, e, count);
-          if (visit(ids, count, tExit))
-          {
-            stop = true;
-            break;
-          }
+          stop = visit(ids, count, tExit);
+        }
+        if (stop)
+        {
+          break;
         }
       }
-      if (!(tNext[a] < t1))
+      // The step without branches (the axis changes from cell to cell unpredictably).
+      const bool bx = (tx < ty) & (tx < tz), by = !(tx < ty) & (ty < tz), bz = !bx & !by;
+      const double tm = bx ? tx : (by ? ty : tz);
+      const int l = bx ? lx : (by ? ly : lz);
+      if (!(tm < t1) || l == 0)
       {
         break;
       }
-      i[a] += step[a];
-      if (i[a] == out[a])
-      {
-        break;
-      }
-      idx += stride[a];
-      tEnter = tNext[a];
-      tNext[a] += tDelta[a];
+      lx -= bx;
+      ly -= by;
+      lz -= bz;
+      tEnter = tm;
+      tx = bx ? tx + dt[0] : tx;
+      ty = by ? ty + dt[1] : ty;
+      tz = bz ? tz + dt[2] : tz;
+      idx += bx ? di[0] : (by ? di[1] : di[2]);
     }
     c.voxelsVisited += visited;
     return stop;
+  }
+
+  /// The seed's N = 2 descent through a 2 x 2 x 2 subgrid: the three mid-plane distances order
+  /// the at most four cells a ray crosses (as the octree walks), with no DDA to set up.
+  template <class Id, class Visitor>
+  bool WalkOctants(const Id* lists, std::uint32_t block, int depth, const double lo[3], double t0, double t1,
+    const RayPrep& p, Visitor& visit, Counters& c) const
+  {
+    const double* cs = Cs[depth];
+    double tm[3];
+    int bits = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double mid = lo[a] + cs[a], d = p.dir[a];
+      tm[a] = d != 0.0 ? (mid - p.org[a]) * p.inv[a] : std::numeric_limits<double>::infinity();
+      // The cell holding the entry point, decided from the same mid-plane distances the walk uses.
+      const bool high = d > 0 ? tm[a] <= t0 : (d < 0 ? !(tm[a] <= t0) : p.org[a] >= mid);
+      bits |= high ? (1 << a) : 0;
+    }
+    const std::uint64_t w = Words[block];
+    const std::uint32_t first = Rank[block];
+    double tcur = t0;
+    for (int k = 0; k < 4; ++k)
+    {
+      ++c.voxelsVisited;
+      double tcross = std::numeric_limits<double>::infinity();
+      int axis = -1;
+      for (int a = 0; a < 3; ++a)
+      {
+        const bool high = bits & (1 << a);
+        if (((p.dir[a] > 0 && !high) || (p.dir[a] < 0 && high)) && tm[a] < tcross)
+        {
+          tcross = tm[a];
+          axis = a;
+        }
+      }
+      if ((w >> bits) & 1)
+      {
+        const double tExit = std::min(tcross, t1);
+        const std::uint32_t e = Entries[first + PopCount(w & ((1ull << bits) - 1))];
+        bool stop;
+        if (e & Child)
+        {
+          const double clo[3] = { bits & 1 ? lo[0] + cs[0] : lo[0], bits & 2 ? lo[1] + cs[1] : lo[1],
+            bits & 4 ? lo[2] + cs[2] : lo[2] };
+          stop = WalkOctants(lists, e & ~Child, depth + 1, clo, tcur, tExit, p, visit, c);
+        }
+        else
+        {
+          std::uint32_t count;
+          const Id* ids = CellLists::Read(lists, e, count);
+          stop = visit(ids, count, tExit);
+        }
+        if (stop)
+        {
+          return true;
+        }
+      }
+      if (axis < 0 || !(tcross < t1))
+      {
+        return false;
+      }
+      bits ^= 1 << axis;
+      tcur = std::max(tcur, tcross);
+    }
+    return false;
   }
 
   template <class Id, class Visitor>
