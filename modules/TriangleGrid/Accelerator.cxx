@@ -46,60 +46,6 @@ Counters Accelerator::AnyBatch(const std::vector<Ray>& rays, std::vector<unsigne
   });
 }
 
-namespace
-{
-bool ShareVertex(const TriangleStore& s, const TriangleRecord& a, const TriangleRecord& b)
-{
-  // By position, not index: polygon soups repeat points for each face.
-  const float* xyz = s.Vertices();
-  for (int i = 0; i < 3; ++i)
-  {
-    const float* p = xyz + 3 * size_t(a.v[i]);
-    for (int j = 0; j < 3; ++j)
-    {
-      const float* q = xyz + 3 * size_t(b.v[j]);
-      if (a.v[i] == b.v[j] || (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]))
-      {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-} // namespace
-
-void SortAndMergeHits(const TriangleStore& s, std::vector<Hit>& hits, double tol)
-{
-  std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
-    return a.t < b.t || (a.t == b.t && a.record < b.record);
-  });
-  std::vector<Hit> out;
-  out.reserve(hits.size());
-  for (const Hit& h : hits)
-  {
-    bool repeat = false;
-    // Compare with every kept hit within tol (a vertex may be shared by many triangles).
-    for (auto it = out.rbegin(); it != out.rend() && h.t - it->t <= tol; ++it)
-    {
-      if (it->record == h.record ||
-        ShareVertex(s, s.Record(static_cast<size_t>(it->record)), s.Record(static_cast<size_t>(h.record))))
-      {
-        repeat = true;
-        break;
-      }
-    }
-    if (!repeat)
-    {
-      out.push_back(h);
-    }
-  }
-  for (Hit& h : out)
-  {
-    h.triangle = s.OriginalIndex(static_cast<size_t>(h.record));
-  }
-  hits.swap(out);
-}
-
 std::vector<std::uint32_t> PlaneOrder(const TriangleStore& s)
 {
   std::vector<std::uint32_t> ids(s.Size());
@@ -115,18 +61,26 @@ std::unique_ptr<Accelerator> MakeAccelerator(std::shared_ptr<const TriangleStore
   {
     throw Error("no triangle store given");
   }
+  std::unique_ptr<Accelerator> acc;
   switch (o.kind)
   {
     case AcceleratorKind::BruteForce:
-      return std::unique_ptr<Accelerator>(new BruteForce(std::move(store)));
+      acc.reset(new BruteForce(std::move(store)));
+      break;
     case AcceleratorKind::UniformGrid:
-      return std::unique_ptr<Accelerator>(new UniformGrid(std::move(store), o));
+      acc.reset(new UniformGrid(std::move(store), o));
+      break;
     case AcceleratorKind::RecursiveGrid:
-      return std::unique_ptr<Accelerator>(new RecursiveGrid(std::move(store), o));
+      acc.reset(new RecursiveGrid(std::move(store), o));
+      break;
     case AcceleratorKind::Octree:
-      return std::unique_ptr<Accelerator>(new Octree(std::move(store), o));
+      acc.reset(new Octree(std::move(store), o));
+      break;
+    default:
+      throw Error("unknown accelerator kind");
   }
-  throw Error("unknown accelerator kind");
+  acc->SetTriangleTest(o.triangleTest);
+  return acc;
 }
 
 AcceleratorKind AcceleratorKindFromName(const std::string& n)

@@ -8,6 +8,7 @@
 #include "Box3.h"
 #include "Counters.h"
 #include "Ray.h"
+#include "TriangleKernels.h"
 #include "TriangleStore.h"
 
 #include <limits>
@@ -54,6 +55,7 @@ struct AcceleratorOptions
   bool topLevelGrid = true; ///< R: false starts from one voxel holding the whole scene
   int planeWeight = 0;    ///< O: PLANE_WEIGHT; 0 = default
   double cellsPerTriangle = 0; ///< uniform grid density; 0 = default
+  TriangleTestIsa triangleTest = TriangleTestIsa::Best; ///< the batch triangle test (same answers)
 };
 
 class ADAPTIVERTTRIANGLEGRID_EXPORT Accelerator
@@ -94,9 +96,19 @@ public:
   const TriangleStore& Store() const { return *S; }
   std::shared_ptr<const TriangleStore> StorePtr() const { return S; }
 
+  /// The batch triangle test (the widest the processor has unless asked otherwise); every one
+  /// gives the same answers.
+  const TriangleKernel& TriangleTest() const { return *Kernel; }
+  void SetTriangleTest(TriangleTestIsa isa) { Kernel = &TriangleKernelFor(isa, S->Size(), S->PointCount()); }
+
 protected:
-  explicit Accelerator(std::shared_ptr<const TriangleStore> s) : S(std::move(s)) {}
+  explicit Accelerator(std::shared_ptr<const TriangleStore> s)
+    : S(std::move(s))
+    , Kernel(&TriangleKernelFor(TriangleTestIsa::Best, S->Size(), S->PointCount()))
+  {
+  }
   std::shared_ptr<const TriangleStore> S;
+  const TriangleKernel* Kernel;
 };
 
 ADAPTIVERTTRIANGLEGRID_EXPORT std::unique_ptr<Accelerator> MakeAccelerator(

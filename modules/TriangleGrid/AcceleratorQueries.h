@@ -1,8 +1,10 @@
 // AcceleratorQueries: closest, any and all-hits queries written once over any traversal.
 // A structure supplies Walk(prep, t0, t1, visitor): it calls visitor(ids, count, tExit) for each
-// voxel the ray enters, front to back, and stops when the visitor returns true. Closest keeps the
-// nearest hit found so far and stops once it lies before the current voxel's exit (so a hit found
-// in an earlier voxel but lying further on is never taken for the answer too early).
+// voxel the ray enters, front to back, and stops when the visitor returns true. A voxel's
+// triangles not met before (mailbox) and not on a plane the ray crosses outside the interval
+// wanted (PlaneCull) go to the batch triangle test (TriangleKernels.h). Closest keeps the nearest
+// hit so far and stops once it lies before the current voxel's exit; Any stops at the first hit;
+// All hands each voxel's hits to OrderedHits, which emits them in order as voxels end.
 // Point queries: a structure supplies Near(x, prune2, visitor, c), calling visitor(ids, count) for
 // the voxels that may hold a triangle within sqrt(prune2) of x, nearest first where it can, and
 // re-reading prune2 (which the visitor shrinks) before each; and Overlap(box, visitor) for the
@@ -13,6 +15,7 @@
 #include "Accelerator.h"
 #include "Box3.h"
 #include "ClosestPoint.h"
+#include "OrderedHits.h"
 #include "TriBoxOverlap.h"
 #include "WatertightTest.h"
 
@@ -27,6 +30,10 @@ class WalkingAccelerator : public Accelerator
 public:
   using Accelerator::Accelerator;
 
+  /// Batches of fewer triangles are tested inline one at a time: filling the wide kernel's lanes
+  /// costs more than it saves (tests/benchmarks/triangles-results/README.md).
+  static constexpr int WideBatch = 8;
+
   bool Closest(const Ray& r, Hit& hit, Counters& c) const override
   {
     ++c.rays;
@@ -36,71 +43,48 @@ public:
       return false;
     }
     const RayPrep p(r);
-    const TriangleRecord* rec = S->Data();
-    const float* xyz = S->Vertices();
-    const PlaneRecord* planes = S->Planes().data();
-    const double planeMargin = 1e-5 * S->Bounds().Diagonal();
+    PlaneCull cull(*S, p);
     Mailbox mb;
-    double best = r.tmax, bu = 0, bv = 0;
-    long long bestRec = -1;
-    std::uint32_t checkedPlane = ~0u;
-    bool planeCulled = false;
+    NearestSoFar best{ r.tmax, 0, 0, -1 };
     auto visit = [&](const auto* ids, std::uint32_t n, double tExit) {
+      std::uint32_t batch[64];
+      int m = 0;
       for (std::uint32_t k = 0; k < n; ++k)
       {
         const std::uint32_t id = ids[k];
-        if (mb.Seen(id))
+        // A repeat is skipped before its record is touched; a plane beyond the nearest hit so far
+        // (or before tmin) culls all its triangles with one distance.
+        if (mb.Seen(id) || cull.Outside(S->Record(id).plane, r.tmin, best.t))
         {
-          continue; // before touching the record: a repeat costs no memory traffic
+          continue;
         }
-        const TriangleRecord& t = rec[id];
-        if (t.plane != TriangleRecord::NoPlane)
+        batch[m++] = id;
+        if (m == 64)
         {
-          // Coplanar triangles share a plane: one ray/plane distance culls them all when the
-          // plane lies beyond the nearest hit so far (or before tmin).
-          if (t.plane != checkedPlane)
-          {
-            checkedPlane = t.plane;
-            const PlaneRecord& pl = planes[t.plane];
-            const double den = pl.n[0] * p.dir[0] + pl.n[1] * p.dir[1] + pl.n[2] * p.dir[2];
-            const double num = pl.d - (pl.n[0] * p.org[0] + pl.n[1] * p.org[1] + pl.n[2] * p.org[2]);
-            planeCulled = false;
-            if (den != 0.0)
-            {
-              const double tp = num / den, margin = planeMargin / std::fabs(den);
-              planeCulled = tp > best + margin || tp < r.tmin - margin;
-            }
-          }
-          if (planeCulled)
-          {
-            continue; // for good: the bound only shrinks
-          }
-        }
-        ++c.trianglesTested;
-        double th, u, v;
-        // Of hits at equal t the lowest record (the lowest input index) wins, so the answer does
-        // not depend on the order a structure meets its triangles in.
-        if (IntersectTriangle(p, xyz, t, r.tmin, best, th, u, v) && (th < best || bestRec < 0 || id < bestRec))
-        {
-          best = th;
-          bu = u;
-          bv = v;
-          bestRec = id;
-          checkedPlane = ~0u; // the bound moved: planes must be checked again
+          TestClosest(p.s, batch, m, r.tmin, best);
+          c.trianglesTested += m;
+          m = 0;
         }
       }
-      return bestRec >= 0 && best <= tExit;
+      if (m > 0)
+      {
+        TestClosest(p.s, batch, m, r.tmin, best);
+        c.trianglesTested += m;
+      }
+      // Done once the nearest hit lies in this voxel: a hit found here but lying further on
+      // could still be beaten by a triangle of a later voxel.
+      return best.record >= 0 && best.t <= tExit;
     };
     static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
-    if (bestRec < 0)
+    if (best.record < 0)
     {
       return false;
     }
-    hit.t = best;
-    hit.u = bu;
-    hit.v = bv;
-    hit.record = bestRec;
-    hit.triangle = S->OriginalIndex(static_cast<size_t>(bestRec));
+    hit.t = best.t;
+    hit.u = best.u;
+    hit.v = best.v;
+    hit.record = best.record;
+    hit.triangle = S->OriginalIndex(static_cast<size_t>(best.record));
     ++c.hits;
     return true;
   }
@@ -113,26 +97,33 @@ public:
       return false;
     }
     const RayPrep p(r);
-    const TriangleRecord* rec = S->Data();
-    const float* xyz = S->Vertices();
+    PlaneCull cull(*S, p);
     Mailbox mb;
     bool found = false;
     auto visit = [&](const auto* ids, std::uint32_t n, double) {
-      for (std::uint32_t k = 0; k < n; ++k)
+      std::uint32_t batch[64];
+      int m = 0;
+      for (std::uint32_t k = 0; k < n && !found; ++k)
       {
-        if (mb.Seen(ids[k]))
+        const std::uint32_t id = ids[k];
+        if (mb.Seen(id) || cull.Outside(S->Record(id).plane, r.tmin, r.tmax))
         {
           continue;
         }
-        ++c.trianglesTested;
-        double th, u, v;
-        if (IntersectTriangle(p, xyz, rec[ids[k]], r.tmin, r.tmax, th, u, v))
+        batch[m++] = id;
+        if (m == 64)
         {
-          found = true;
-          return true;
+          found = TestAny(p.s, batch, m, r.tmin, r.tmax);
+          c.trianglesTested += m;
+          m = 0;
         }
       }
-      return false;
+      if (m > 0 && !found)
+      {
+        found = TestAny(p.s, batch, m, r.tmin, r.tmax);
+        c.trianglesTested += m;
+      }
+      return found; // the first hit ends the walk
     };
     static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
     c.hits += found ? 1 : 0;
@@ -148,28 +139,44 @@ public:
       return;
     }
     const RayPrep p(r);
-    const TriangleRecord* rec = S->Data();
-    const float* xyz = S->Vertices();
+    PlaneCull cull(*S, p);
     Mailbox mb;
-    auto visit = [&](const auto* ids, std::uint32_t n, double) {
+    OrderedHits collect(*S, hits, 1e-7 * S->Bounds().Diagonal() * p.invLen);
+    BatchHits found;
+    auto flush = [&](const std::uint32_t* batch, int m) {
+      const int k = TestAll(p.s, batch, m, r.tmin, r.tmax, found);
+      for (int i = 0; i < k; ++i)
+      {
+        collect.Add(found.t[i], found.u[i], found.v[i], found.record[i]);
+      }
+      c.trianglesTested += m;
+    };
+    auto visit = [&](const auto* ids, std::uint32_t n, double tExit) {
+      std::uint32_t batch[64];
+      int m = 0;
       for (std::uint32_t k = 0; k < n; ++k)
       {
-        if (mb.Seen(ids[k]))
+        const std::uint32_t id = ids[k];
+        if (mb.Seen(id) || cull.Outside(S->Record(id).plane, r.tmin, r.tmax))
         {
           continue;
         }
-        ++c.trianglesTested;
-        Hit h;
-        if (IntersectTriangle(p, xyz, rec[ids[k]], r.tmin, r.tmax, h.t, h.u, h.v))
+        batch[m++] = id;
+        if (m == 64)
         {
-          h.record = ids[k];
-          hits.push_back(h);
+          flush(batch, m);
+          m = 0;
         }
       }
+      if (m > 0)
+      {
+        flush(batch, m);
+      }
+      collect.EndVoxel(tExit); // every hit up to tExit is known: those are final
       return false;
     };
     static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
-    SortAndMergeHits(*S, hits, 1e-7 * S->Bounds().Diagonal() * p.invLen);
+    collect.Finish();
     c.hits += hits.empty() ? 0 : 1;
   }
 
@@ -297,6 +304,28 @@ public:
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
   }
+
+private:
+  void TestClosest(const ShearedRay& r, const std::uint32_t* ids, int m, double tmin, NearestSoFar& best) const
+  {
+    if (m >= WideBatch && Kernel->width > 1)
+    {
+      Kernel->closest(r, Words(), S->Vertices(), ids, m, tmin, best);
+      return;
+    }
+    ClosestOfBatch(r, S->Data(), S->Vertices(), ids, m, tmin, best);
+  }
+  bool TestAny(const ShearedRay& r, const std::uint32_t* ids, int m, double tmin, double tmax) const
+  {
+    return m >= WideBatch && Kernel->width > 1 ? Kernel->any(r, Words(), S->Vertices(), ids, m, tmin, tmax)
+                                               : AnyOfBatch(r, S->Data(), S->Vertices(), ids, m, tmin, tmax);
+  }
+  int TestAll(const ShearedRay& r, const std::uint32_t* ids, int m, double tmin, double tmax, BatchHits& out) const
+  {
+    return m >= WideBatch && Kernel->width > 1 ? Kernel->all(r, Words(), S->Vertices(), ids, m, tmin, tmax, out)
+                                               : AllOfBatch(r, S->Data(), S->Vertices(), ids, m, tmin, tmax, out);
+  }
+  const std::uint32_t* Words() const { return reinterpret_cast<const std::uint32_t*>(S->Data()); }
 };
 } // namespace art
 

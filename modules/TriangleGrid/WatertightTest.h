@@ -1,11 +1,13 @@
 // WatertightTest: the watertight ray/triangle test of Woop, Benthin & Wald, "Watertight
-// Ray/Triangle Intersection" (JCGT 2(1), 2013), in double precision on the store's float vertices,
-// plus the per-ray set-up and a small mailbox shared by every accelerator's traversal.
+// Ray/Triangle Intersection" (JCGT 2(1), 2013), in double precision on the store's float vertices
+// (one triangle; TriangleKernels.h tests a voxel's triangles in batches), plus what every
+// accelerator's traversal shares per ray: the set-up, the coplanar cull and a small mailbox.
 #ifndef art_WatertightTest_h
 #define art_WatertightTest_h
 
 #include "Box3.h"
 #include "Ray.h"
+#include "TriangleKernels.h"
 #include "TriangleStore.h"
 
 #include <algorithm>
@@ -20,9 +22,7 @@ namespace art
 struct RayPrep
 {
   double org[3], dir[3], inv[3];
-  int kx = 0, ky = 1, kz = 2;
-  double Ox = 0, Oy = 0, Oz = 0; ///< the origin permuted: org[kx], org[ky], org[kz]
-  double Sx = 0, Sy = 0, Sz = 1;
+  ShearedRay s; ///< what the triangle test needs
   double invLen = 1; ///< 1 / |dir|
 
   explicit RayPrep(const Ray& r)
@@ -34,19 +34,13 @@ struct RayPrep
       inv[a] = 1.0 / dir[a]; // +-0 gives +-inf, which the slab and DDA code expect
     }
     const double ax = std::fabs(dir[0]), ay = std::fabs(dir[1]), az = std::fabs(dir[2]);
-    kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-    kx = (kz + 1) % 3;
-    ky = (kx + 1) % 3;
+    const int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
     if (dir[kz] < 0)
     {
       std::swap(kx, ky); // keep the winding, so the sign of det says which side was hit
     }
-    Ox = org[kx];
-    Oy = org[ky];
-    Oz = org[kz];
-    Sx = dir[kx] / dir[kz];
-    Sy = dir[ky] / dir[kz];
-    Sz = 1.0 / dir[kz];
+    s = ShearedRay{ org[kx], org[ky], org[kz], dir[kx] / dir[kz], dir[ky] / dir[kz], 1.0 / dir[kz], kx, ky, kz };
     invLen = 1.0 / std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
   }
 
@@ -86,7 +80,7 @@ struct RayPrep
 /// Edge functions are computed per vertex pair from per-vertex values, so the two triangles of a
 /// shared edge get exactly opposite values and a ray can never pass between them. The module is
 /// compiled with -ffp-contract=off so no fused multiply-add breaks that symmetry.
-inline bool IntersectTriangle(const RayPrep& r, const float* xyz, const TriangleRecord& t, double tmin,
+inline bool IntersectTriangle(const ShearedRay& r, const float* xyz, const TriangleRecord& t, double tmin,
   double tmax, double& tHit, double& u, double& v)
 {
   const float *A = xyz + 3 * size_t(t.v[0]), *B = xyz + 3 * size_t(t.v[1]), *C = xyz + 3 * size_t(t.v[2]);
@@ -119,6 +113,96 @@ inline bool IntersectTriangle(const RayPrep& r, const float* xyz, const Triangle
   v = W / det;
   return true;
 }
+
+/// A batch one triangle at a time (TriangleKernels.h's scalar kernel; inlined into the queries
+/// for batches too small for the wide kernels). Closest keeps the nearest hit with t in
+/// [tmin, best.t], of equal t the lowest record.
+inline void ClosestOfBatch(const ShearedRay& r, const TriangleRecord* rec, const float* xyz, const std::uint32_t* ids,
+  int n, double tmin, NearestSoFar& best)
+{
+  for (int k = 0; k < n; ++k)
+  {
+    double t, u, v;
+    const long long id = ids[k];
+    if (IntersectTriangle(r, xyz, rec[id], tmin, best.t, t, u, v) && (t < best.t || best.record < 0 || id < best.record))
+    {
+      best = NearestSoFar{ t, u, v, id };
+    }
+  }
+}
+
+inline bool AnyOfBatch(const ShearedRay& r, const TriangleRecord* rec, const float* xyz, const std::uint32_t* ids, int n,
+  double tmin, double tmax)
+{
+  for (int k = 0; k < n; ++k)
+  {
+    double t, u, v;
+    if (IntersectTriangle(r, xyz, rec[ids[k]], tmin, tmax, t, u, v))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+inline int AllOfBatch(const ShearedRay& r, const TriangleRecord* rec, const float* xyz, const std::uint32_t* ids, int n,
+  double tmin, double tmax, BatchHits& out)
+{
+  int found = 0;
+  for (int k = 0; k < n; ++k)
+  {
+    if (IntersectTriangle(r, xyz, rec[ids[k]], tmin, tmax, out.t[found], out.u[found], out.v[found]))
+    {
+      out.record[found++] = ids[k];
+    }
+  }
+  return found;
+}
+
+/// Culls the triangles of a shared plane with one ray/plane distance: when the ray crosses the
+/// plane outside [lo, hi] (by more than a margin of 1e-5 of the scene's diagonal, far above the
+/// coplanarity tolerance and the float plane's rounding), none of them can be hit in [lo, hi].
+/// The last plane's answer is kept while `hi` stays the same.
+class PlaneCull
+{
+public:
+  PlaneCull(const TriangleStore& s, const RayPrep& p)
+    : Planes(s.Planes().data())
+    , P(p)
+    , Margin(1e-5 * s.Bounds().Diagonal())
+  {
+  }
+  bool Outside(std::uint32_t plane, double lo, double hi)
+  {
+    if (plane == TriangleRecord::NoPlane)
+    {
+      return false;
+    }
+    if (plane != Last || hi != Hi)
+    {
+      Last = plane;
+      Hi = hi;
+      const PlaneRecord& pl = Planes[plane];
+      const double den = double(pl.n[0]) * P.dir[0] + double(pl.n[1]) * P.dir[1] + double(pl.n[2]) * P.dir[2];
+      const double num = double(pl.d) - (double(pl.n[0]) * P.org[0] + double(pl.n[1]) * P.org[1] + double(pl.n[2]) * P.org[2]);
+      Out = false;
+      if (den != 0.0)
+      {
+        const double tp = num / den, margin = Margin / std::fabs(den);
+        Out = tp > hi + margin || tp < lo - margin;
+      }
+    }
+    return Out;
+  }
+
+private:
+  const PlaneRecord* Planes;
+  const RayPrep& P;
+  double Margin;
+  std::uint32_t Last = TriangleRecord::NoPlane;
+  double Hi = 0;
+  bool Out = false;
+};
 
 /// A direct-mapped mailbox (one per ray): skips re-testing a triangle met in the previous voxels.
 /// A collision only costs a repeated test; queries are correct without it.

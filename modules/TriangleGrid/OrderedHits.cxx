@@ -1,0 +1,109 @@
+#include "OrderedHits.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace art
+{
+namespace
+{
+bool Before(const Hit& a, const Hit& b)
+{
+  return a.t < b.t || (a.t == b.t && a.record < b.record);
+}
+} // namespace
+
+bool ShareVertex(const TriangleStore& s, const TriangleRecord& a, const TriangleRecord& b)
+{
+  const float* xyz = s.Vertices();
+  for (int i = 0; i < 3; ++i)
+  {
+    const float* p = xyz + 3 * size_t(a.v[i]);
+    for (int j = 0; j < 3; ++j)
+    {
+      const float* q = xyz + 3 * size_t(b.v[j]);
+      if (a.v[i] == b.v[j] || (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+OrderedHits::OrderedHits(const TriangleStore& s, std::vector<Hit>& out, double tol)
+  : S(s)
+  , Out(out)
+  , Tol(tol)
+  , Done(-std::numeric_limits<double>::infinity())
+{
+  Out.clear();
+}
+
+bool OrderedHits::Repeat(const Hit& h) const
+{
+  // Every kept hit within tol (a vertex may be shared by many triangles).
+  for (size_t k = Emitted; k > 0 && h.t - Out[k - 1].t <= Tol; --k)
+  {
+    const Hit& kept = Out[k - 1];
+    if (kept.record == h.record ||
+      ShareVertex(S, S.Record(static_cast<size_t>(kept.record)), S.Record(static_cast<size_t>(h.record))))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+void OrderedHits::EndVoxel(double tExit)
+{
+  if (Out.size() == Emitted)
+  {
+    Done = std::max(Done, tExit);
+    return;
+  }
+  // The pending hits are few: insertion sort.
+  for (size_t i = Emitted + 1; i < Out.size(); ++i)
+  {
+    const Hit h = Out[i];
+    size_t j = i;
+    for (; j > Emitted && Before(h, Out[j - 1]); --j)
+    {
+      Out[j] = Out[j - 1];
+    }
+    Out[j] = h;
+  }
+  size_t read = Emitted;
+  for (; read < Out.size() && Out[read].t <= tExit; ++read)
+  {
+    if (!Repeat(Out[read]))
+    {
+      Out[Emitted++] = Out[read];
+    }
+  }
+  Out.erase(Out.begin() + static_cast<std::ptrdiff_t>(Emitted), Out.begin() + static_cast<std::ptrdiff_t>(read));
+  Done = std::max(Done, tExit);
+}
+
+void OrderedHits::Finish()
+{
+  EndVoxel(std::numeric_limits<double>::infinity());
+  for (Hit& h : Out)
+  {
+    h.triangle = S.OriginalIndex(static_cast<size_t>(h.record));
+  }
+}
+
+void SortAndMergeHits(const TriangleStore& s, std::vector<Hit>& hits, double tol)
+{
+  std::vector<Hit> all;
+  all.swap(hits);
+  OrderedHits merged(s, hits, tol);
+  std::sort(all.begin(), all.end(), Before);
+  for (const Hit& h : all)
+  {
+    merged.Add(h.t, h.u, h.v, static_cast<std::uint32_t>(h.record));
+  }
+  merged.Finish();
+}
+} // namespace art

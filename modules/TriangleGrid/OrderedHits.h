@@ -1,0 +1,53 @@
+// OrderedHits: the all-hits query's list, built voxel by voxel without sorting it whole. Once a
+// voxel ends at tExit every hit up to tExit is known (a triangle is in every voxel it touches),
+// so the voxel's new hits up to there are sorted among themselves (few) and appended; where a
+// ray crosses an edge or vertex shared by several triangles, one hit stands for the surface
+// (as SortAndMergeHits decides on the whole list: the same list, in the same order).
+#ifndef art_OrderedHits_h
+#define art_OrderedHits_h
+
+#include "Accelerator.h"
+
+#include <vector>
+
+namespace art
+{
+class ADAPTIVERTTRIANGLEGRID_EXPORT OrderedHits
+{
+public:
+  /// Fills `out` (cleared); hits within `tol` in t on triangles sharing a vertex are one surface.
+  OrderedHits(const TriangleStore& s, std::vector<Hit>& out, double tol);
+  /// A hit found in the current voxel.
+  void Add(double t, double u, double v, std::uint32_t record)
+  {
+    // At or before the last voxel's end: a triangle already met (the mailbox forgot it).
+    if (t > Done)
+    {
+      Hit h;
+      h.t = t;
+      h.u = u;
+      h.v = v;
+      h.record = record;
+      Out.push_back(h);
+    }
+  }
+  /// The voxel ended at tExit: the hits up to there are final.
+  void EndVoxel(double tExit);
+  /// Emits the rest and names each hit's input triangle.
+  void Finish();
+
+private:
+  bool Repeat(const Hit& h) const;
+
+  const TriangleStore& S;
+  std::vector<Hit>& Out; ///< [0, Emitted) final, the rest pending
+  double Tol;
+  size_t Emitted = 0;
+  double Done;
+};
+
+/// Whether two records share a vertex, by index or by position (polygon soups repeat points).
+ADAPTIVERTTRIANGLEGRID_EXPORT bool ShareVertex(const TriangleStore& s, const TriangleRecord& a, const TriangleRecord& b);
+} // namespace art
+
+#endif
