@@ -363,9 +363,10 @@ void Declare(cli::Options& o)
     const std::string shared = std::string(ART_DATA_DIR) + "/../../shared/data/" + name;
     return std::filesystem::exists(full) || !std::filesystem::exists(shared) ? full : shared;
   };
-  o.Add("tri-scenes", 0, "FILE,..", "triangles: scenes (data/fetch gets the bunny, hydronex2 and oa_minia)",
+  o.Add("tri-scenes", 0, "FILE,..",
+    "triangles: scenes (data/fetch gets the bunny, hydronex2, oa_minia and the CT skull surface, surface_0.vtp)",
     cli::DataDir() + "/am_underworks.ply," + scene("bunny.ply") + "," + scene("hydronex2.ply") + "," +
-      scene("oa_minia.ply"));
+      scene("oa_minia.ply") + "," + scene("surface_0.vtp"));
   o.Add("tri-size", 0, "WxH", "triangles: primary rays per scene", "800x600");
   o.Add("tri-lights", 0, "N", "triangles: point lights (shadow rays per visible point)", "3");
   o.Add("tri-vtk-rays", 0, "N", "triangles: primary rays given to each VTK locator (a strided subset)", "20000");
@@ -645,13 +646,23 @@ int Run(const cli::Options& o)
     {
       j.Set("closestVsVtkStatic1", ours->prim1.median / vst->prim1.median);
     }
+    if (ours)
+    {
+      j.Set("bytesPerTriangle", ours->bytesPerTri);
+    }
+    if (ours && emb)
+    {
+      j.Set("buildVsEmbree", ours->buildMs / emb->buildMs);
+    }
     std::snprintf(line, sizeof line,
-      "| %s | %zu | %s | %s | %s | %s | %s |\n", s.name.c_str(), s.store->Size(),
+      "| %s | %zu | %s | %s | %s | %s | %s | %s | %s |\n", s.name.c_str(), s.store->Size(),
       ours && emb ? Fmt(ours->prim1.median / emb->prim1.median).c_str() : "n/a",
       ours && emb ? Fmt(ours->prim2.median / emb->prim2.median).c_str() : "n/a",
       ours && emb ? Fmt(ours->shad1.median / emb->shad1.median).c_str() : "n/a",
       ours && emb ? Fmt(ours->all1.median / emb->all1.median).c_str() : "n/a",
-      ours && vst ? Fmt(ours->prim1.median / vst->prim1.median, 1).c_str() : "n/a");
+      ours && vst ? Fmt(ours->prim1.median / vst->prim1.median, 1).c_str() : "n/a",
+      ours ? Fmt(ours->bytesPerTri, 0).c_str() : "n/a",
+      ours && emb ? Fmt(ours->buildMs / emb->buildMs).c_str() : "n/a");
     ratioText += line;
     jratios.push_back(j);
   }
@@ -721,8 +732,8 @@ int Run(const cli::Options& o)
       << nLights << " shadow rays per visible point. Mrays/s; closest = primary rays, shadow = any-hit, "
       << "all = every hit along the primary rays.\n\n";
     f << "## Ratios: our recursive grid (default R) / anchor\n\n"
-      << "| scene | triangles | closest vs Embree, 1 thread | closest vs Embree, 2 threads | shadow vs Embree | all hits vs Embree | closest vs vtkStaticCellLocator |\n"
-      << "|---|---:|---:|---:|---:|---:|---:|\n"
+      << "| scene | triangles | closest vs Embree, 1 thread | closest vs Embree, 2 threads | shadow vs Embree | all hits vs Embree | closest vs vtkStaticCellLocator | bytes/tri | build time / Embree's |\n"
+      << "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n"
       << ratioText << "\n";
     if (!pointText.empty())
     {
@@ -751,7 +762,8 @@ int Run(const cli::Options& o)
   }
 
   std::printf("## Ratios: our recursive grid / anchor\n\n| scene | triangles | closest vs Embree 1T | 2T | shadow vs Embree | "
-              "all hits vs Embree | closest vs vtkStaticCellLocator |\n|---|---:|---:|---:|---:|---:|---:|\n%s\n",
+              "all hits vs Embree | closest vs vtkStaticCellLocator | bytes/tri | build / Embree |\n"
+              "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n%s\n",
     ratioText.c_str());
   if (!pointText.empty())
   {
