@@ -116,94 +116,78 @@ protected:
   {
     const int* n = Dims(depth);
     const double *cs = Cs[depth], *ics = InvCs[depth];
-    const long long stride[3] = { 1, n[0], static_cast<long long>(n[0]) * n[1] };
-    double tn[3], dt[3];
-    long long di[3], idx = 0;
-    int left[3], at[3];
+    int i[3], step[3], out[3];
+    double tNext[3], tDelta[3];
     for (int a = 0; a < 3; ++a)
     {
       const double d = p.dir[a];
       const int k = CellOf((p.org[a] + d * t0 - lo[a]) * ics[a], n[a]);
-      at[a] = k;
-      idx += k * stride[a];
-      if (d > 0)
-      {
-        tn[a] = (lo[a] + (k + 1) * cs[a] - p.org[a]) * p.inv[a];
-        dt[a] = cs[a] * p.inv[a];
-        di[a] = stride[a];
-        left[a] = n[a] - 1 - k;
-      }
-      else if (d < 0)
-      {
-        tn[a] = (lo[a] + k * cs[a] - p.org[a]) * p.inv[a];
-        dt[a] = -(cs[a] * p.inv[a]);
-        di[a] = -stride[a];
-        left[a] = k;
-      }
-      else
-      {
-        tn[a] = dt[a] = std::numeric_limits<double>::infinity();
-        di[a] = 0;
-        left[a] = 0;
-      }
+      i[a] = k;
+      tDelta[a] = d == 0.0 ? std::numeric_limits<double>::infinity() : std::fabs(cs[a] * p.inv[a]);
+      step[a] = d > 0 ? 1 : (d < 0 ? -1 : 0);
+      out[a] = d > 0 ? n[a] : -1;
+      tNext[a] = d > 0 ? (lo[a] + (k + 1) * cs[a] - p.org[a]) * p.inv[a]
+                       : (d < 0 ? (lo[a] + k * cs[a] - p.org[a]) * p.inv[a] : std::numeric_limits<double>::infinity());
     }
-    double tx = tn[0], ty = tn[1], tz = tn[2], tEnter = t0;
-    int lx = left[0], ly = left[1], lz = left[2];
+    // The linear cell index moves by a per-axis stride; an empty cell costs a bit test.
+    const long long stride[3] = { step[0], static_cast<long long>(step[1]) * n[0],
+      static_cast<long long>(step[2]) * n[0] * n[1] };
+    long long idx = (static_cast<long long>(i[2]) * n[1] + i[1]) * n[0] + i[0];
     const std::uint64_t* words = Words.data() + block;
+    const std::uint32_t* rank = Rank.data() + block;
+    double tEnter = t0;
     std::uint64_t visited = 0;
     bool stop = false;
     for (;;)
     {
       ++visited;
-      const std::uint64_t w = words[idx >> 6];
-      if ((w >> (idx & 63)) & 1)
+      // The axis of the nearest crossing from a table, without a branch: the choice of
+      // tNext[0] < tNext[1] ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2).
+      static constexpr signed char AxisOf[8] = { 2, 2, 2, 0, 1, 2, 1, 0 };
+      const int a = AxisOf[int(tNext[0] < tNext[1]) | int(tNext[0] < tNext[2]) << 1 | int(tNext[1] < tNext[2]) << 2];
+      const double tExit = std::min(tNext[a], t1);
+      const std::uint64_t w = words[idx >> 6], bit = 1ull << (idx & 63);
+      if (w & bit)
       {
-        const double tExit = std::min(std::min(tx, std::min(ty, tz)), t1);
-        const std::uint32_t e = Entries[Rank[block + (idx >> 6)] + PopCount(w & ((1ull << (idx & 63)) - 1))];
+        const std::uint32_t e = Entries[rank[idx >> 6] + PopCount(w & (bit - 1))];
         if (e & Child)
         {
-          // The cell's coordinates from the cells left along each axis.
-          const int cx = p.dir[0] > 0 ? n[0] - 1 - lx : (p.dir[0] < 0 ? lx : at[0]);
-          const int cy = p.dir[1] > 0 ? n[1] - 1 - ly : (p.dir[1] < 0 ? ly : at[1]);
-          const int cz = p.dir[2] > 0 ? n[2] - 1 - lz : (p.dir[2] < 0 ? lz : at[2]);
-          const double clo[3] = { lo[0] + cx * cs[0], lo[1] + cy * cs[1], lo[2] + cz * cs[2] };
-          stop = Sub == 2 ? WalkOctants(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c)
-                          : WalkGrid(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c);
+          const double clo[3] = { lo[0] + i[0] * cs[0], lo[1] + i[1] * cs[1], lo[2] + i[2] * cs[2] };
+          if (Sub == 2 ? WalkOctants(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c)
+                       : WalkGrid(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c))
+          {
+            stop = true;
+            break;
+          }
         }
         else
         {
           std::uint32_t count;
           const Id* ids = CellLists::Read(lists, e, count);
-          stop = visit(ids, count, tExit);
-        }
-        if (stop)
-        {
-          break;
+          if (visit(ids, count, tExit))
+          {
+            stop = true;
+            break;
+          }
         }
       }
-      // The step without branches (the axis changes from cell to cell unpredictably).
-      const bool bx = (tx < ty) & (tx < tz), by = !(tx < ty) & (ty < tz), bz = !bx & !by;
-      const double tm = bx ? tx : (by ? ty : tz);
-      const int l = bx ? lx : (by ? ly : lz);
-      if (!(tm < t1) || l == 0)
+      if (!(tNext[a] < t1))
       {
         break;
       }
-      lx -= bx;
-      ly -= by;
-      lz -= bz;
-      tEnter = tm;
-      tx = bx ? tx + dt[0] : tx;
-      ty = by ? ty + dt[1] : ty;
-      tz = bz ? tz + dt[2] : tz;
-      idx += bx ? di[0] : (by ? di[1] : di[2]);
+      i[a] += step[a];
+      if (i[a] == out[a])
+      {
+        break;
+      }
+      idx += stride[a];
+      tEnter = tNext[a];
+      tNext[a] += tDelta[a];
     }
     c.voxelsVisited += visited;
     return stop;
   }
 
-  /// The seed's N = 2 descent through a 2 x 2 x 2 subgrid: the three mid-plane distances order
-  /// the at most four cells a ray crosses (as the octree walks), with no DDA to set up.
   template <class Id, class Visitor>
   bool WalkOctants(const Id* lists, std::uint32_t block, int depth, const double lo[3], double t0, double t1,
     const RayPrep& p, Visitor& visit, Counters& c) const
