@@ -1,10 +1,11 @@
 // AcceleratorQueries: closest, any and all-hits queries written once over any traversal.
 // A structure supplies Walk(prep, t0, t1, visitor): it calls visitor(ids, count, tExit) for each
 // voxel the ray enters, front to back, and stops when the visitor returns true. A voxel's
-// triangles not met before (mailbox) and not on a plane the ray crosses outside the interval
-// wanted (PlaneCull) go to the batch triangle test (TriangleKernels.h). Closest keeps the nearest
-// hit so far and stops once it lies before the current voxel's exit; Any stops at the first hit;
-// All hands each voxel's hits to OrderedHits, which emits them in order as voxels end.
+// triangles not met before (mailbox) go to the triangle test, one at a time or, for a voxel of
+// many, as a batch (TriangleKernels.h). Closest and All first drop triangles on a plane the ray
+// crosses outside the interval wanted (PlaneCull). Closest keeps the nearest hit so far and stops
+// once it lies before the current voxel's exit; Any stops at the first hit; All sorts and merges
+// its hits once the walk ends.
 // Point queries: a structure supplies Near(x, prune2, visitor, c), calling visitor(ids, count) for
 // the voxels that may hold a triangle within sqrt(prune2) of x, nearest first where it can, and
 // re-reading prune2 (which the visitor shrinks) before each; and Overlap(box, visitor) for the
@@ -30,9 +31,10 @@ class WalkingAccelerator : public Accelerator
 public:
   using Accelerator::Accelerator;
 
-  /// Batches of fewer triangles are tested inline one at a time: filling the wide kernel's lanes
-  /// costs more than it saves (tests/benchmarks/triangles-results/README.md).
+  /// Voxels and batches of fewer triangles are tested inline one at a time: filling the wide
+  /// kernel's lanes costs more than it saves (tests/benchmarks/triangles-results/README.md).
   static constexpr int WideBatch = 8;
+  bool Wide(std::uint32_t n) const { return n >= WideBatch && Kernel->width > 1; }
 
   bool Closest(const Ray& r, Hit& hit, Counters& c) const override
   {
@@ -47,6 +49,19 @@ public:
     Mailbox mb;
     NearestSoFar best{ r.tmax, 0, 0, -1 };
     auto visit = [&](const auto* ids, std::uint32_t n, double tExit) {
+      if (!Wide(n))
+      {
+        for (std::uint32_t k = 0; k < n; ++k)
+        {
+          const std::uint32_t id = ids[k];
+          if (!mb.Seen(id) && !cull.Outside(S->Record(id).plane, r.tmin, best.t))
+          {
+            ++c.trianglesTested;
+            ClosestOfBatch(p.s, S->Data(), S->Vertices(), &id, 1, r.tmin, best);
+          }
+        }
+        return best.record >= 0 && best.t <= tExit;
+      }
       std::uint32_t batch[64];
       int m = 0;
       for (std::uint32_t k = 0; k < n; ++k)
@@ -97,16 +112,31 @@ public:
       return false;
     }
     const RayPrep p(r);
-    PlaneCull cull(*S, p);
     Mailbox mb;
     bool found = false;
     auto visit = [&](const auto* ids, std::uint32_t n, double) {
+      if (!Wide(n))
+      {
+        for (std::uint32_t k = 0; k < n; ++k)
+        {
+          const std::uint32_t id = ids[k];
+          if (!mb.Seen(id))
+          {
+            ++c.trianglesTested;
+            if (AnyOfBatch(p.s, S->Data(), S->Vertices(), &id, 1, r.tmin, r.tmax))
+            {
+              return found = true;
+            }
+          }
+        }
+        return false;
+      }
       std::uint32_t batch[64];
       int m = 0;
       for (std::uint32_t k = 0; k < n && !found; ++k)
       {
         const std::uint32_t id = ids[k];
-        if (mb.Seen(id) || cull.Outside(S->Record(id).plane, r.tmin, r.tmax))
+        if (mb.Seen(id))
         {
           continue;
         }
@@ -139,44 +169,53 @@ public:
       return;
     }
     const RayPrep p(r);
-    PlaneCull cull(*S, p);
     Mailbox mb;
-    OrderedHits collect(*S, hits, 1e-7 * S->Bounds().Diagonal() * p.invLen);
     BatchHits found;
-    auto flush = [&](const std::uint32_t* batch, int m) {
-      const int k = TestAll(p.s, batch, m, r.tmin, r.tmax, found);
+    auto keep = [&](int k) {
       for (int i = 0; i < k; ++i)
       {
-        collect.Add(found.t[i], found.u[i], found.v[i], found.record[i]);
+        Hit h;
+        h.t = found.t[i];
+        h.u = found.u[i];
+        h.v = found.v[i];
+        h.record = found.record[i];
+        hits.push_back(h);
       }
-      c.trianglesTested += m;
     };
-    auto visit = [&](const auto* ids, std::uint32_t n, double tExit) {
+    auto visit = [&](const auto* ids, std::uint32_t n, double) {
       std::uint32_t batch[64];
       int m = 0;
       for (std::uint32_t k = 0; k < n; ++k)
       {
         const std::uint32_t id = ids[k];
-        if (mb.Seen(id) || cull.Outside(S->Record(id).plane, r.tmin, r.tmax))
+        if (mb.Seen(id))
         {
+          continue;
+        }
+        if (!Wide(n))
+        {
+          ++c.trianglesTested;
+          keep(AllOfBatch(p.s, S->Data(), S->Vertices(), &id, 1, r.tmin, r.tmax, found));
           continue;
         }
         batch[m++] = id;
         if (m == 64)
         {
-          flush(batch, m);
+          keep(Kernel->all(p.s, Words(), S->Vertices(), batch, m, r.tmin, r.tmax, found));
+          c.trianglesTested += m;
           m = 0;
         }
       }
       if (m > 0)
       {
-        flush(batch, m);
+        keep(Wide(static_cast<std::uint32_t>(m)) ? Kernel->all(p.s, Words(), S->Vertices(), batch, m, r.tmin, r.tmax, found)
+                                                 : AllOfBatch(p.s, S->Data(), S->Vertices(), batch, m, r.tmin, r.tmax, found));
+        c.trianglesTested += m;
       }
-      collect.EndVoxel(tExit); // every hit up to tExit is known: those are final
       return false;
     };
     static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
-    collect.Finish();
+    SortAndMergeHits(*S, hits, 1e-7 * S->Bounds().Diagonal() * p.invLen);
     c.hits += hits.empty() ? 0 : 1;
   }
 
@@ -308,7 +347,7 @@ public:
 private:
   void TestClosest(const ShearedRay& r, const std::uint32_t* ids, int m, double tmin, NearestSoFar& best) const
   {
-    if (m >= WideBatch && Kernel->width > 1)
+    if (Wide(static_cast<std::uint32_t>(m)))
     {
       Kernel->closest(r, Words(), S->Vertices(), ids, m, tmin, best);
       return;
@@ -317,13 +356,8 @@ private:
   }
   bool TestAny(const ShearedRay& r, const std::uint32_t* ids, int m, double tmin, double tmax) const
   {
-    return m >= WideBatch && Kernel->width > 1 ? Kernel->any(r, Words(), S->Vertices(), ids, m, tmin, tmax)
+    return Wide(static_cast<std::uint32_t>(m)) ? Kernel->any(r, Words(), S->Vertices(), ids, m, tmin, tmax)
                                                : AnyOfBatch(r, S->Data(), S->Vertices(), ids, m, tmin, tmax);
-  }
-  int TestAll(const ShearedRay& r, const std::uint32_t* ids, int m, double tmin, double tmax, BatchHits& out) const
-  {
-    return m >= WideBatch && Kernel->width > 1 ? Kernel->all(r, Words(), S->Vertices(), ids, m, tmin, tmax, out)
-                                               : AllOfBatch(r, S->Data(), S->Vertices(), ids, m, tmin, tmax, out);
   }
   const std::uint32_t* Words() const { return reinterpret_cast<const std::uint32_t*>(S->Data()); }
 };

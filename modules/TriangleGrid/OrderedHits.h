@@ -1,8 +1,7 @@
-// OrderedHits: the all-hits query's list, built voxel by voxel without sorting it whole. Once a
-// voxel ends at tExit every hit up to tExit is known (a triangle is in every voxel it touches),
-// so the voxel's new hits up to there are sorted among themselves (few) and appended; where a
-// ray crosses an edge or vertex shared by several triangles, one hit stands for the surface
-// (as SortAndMergeHits decides on the whole list: the same list, in the same order).
+// OrderedHits: an all-hits list made final up to a distance at a time: EndVoxel(t) sorts the hits
+// added since (few) and appends those up to t; where a ray crosses an edge or vertex shared by
+// several triangles, one hit stands for the surface. SortAndMergeHits feeds it a whole sorted
+// list (the queries sort once at the end: emitting voxel by voxel cost more than it saved).
 #ifndef art_OrderedHits_h
 #define art_OrderedHits_h
 
