@@ -1,6 +1,7 @@
-"""Chart of `adaptivert bench triangles`: closest-hit Mrays/s per scene and engine (1 and 2
-threads, log scale), the paper's R/O tables as throughput against memory, and (when measured)
-FindClosestPoint queries/s of vtkTriangleGridLocator against VTK's cell locators.
+"""Chart of `adaptivert bench triangles`: the default grid's ratios to Embree (1 thread) against
+the targets, closest-hit Mrays/s per scene and engine (1 and 2 threads, log scale), the paper's
+R/O tables as throughput against memory (when run), and (when measured) FindClosestPoint
+queries/s of vtkTriangleGridLocator against VTK's cell locators.
 Usage: /usr/bin/python3 triangles_chart.py triangles.json triangles.png"""
 import json
 import sys
@@ -35,10 +36,32 @@ for r in main:
 
 
 points = data.get("closestPoint", [])
-if points:
-    fig, (ax1, ax2, ax3) = plt.subplots(1, 3, figsize=(21, 6))
-else:
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(15, 6))
+tables = [r for r in rows if r["group"] == "table"]
+panels = 2 + bool(tables) + bool(points)
+fig, axes = plt.subplots(1, panels, figsize=(7 * panels, 6))
+ax0, ax1 = axes[0], axes[1]
+ax2 = axes[2] if tables else None
+ax3 = axes[-1] if points else None
+
+# The default grid over Embree, one thread: target 1.0, floors 0.8 (closest) and 0.7.
+queries = [("closestVsEmbree1", "closest", 0.8), ("shadowVsEmbree1", "shadow", 0.7), ("allHitsVsEmbree1", "all hits", 0.7)]
+rw = 0.8 / len(queries)
+for k, (key, label, floor) in enumerate(queries):
+    vals = [r.get(key, 0) for r in data["ratios"]]
+    xs = [i + (k - len(queries) / 2) * rw + rw / 2 for i in range(len(scenes))]
+    bars = ax0.bar(xs, vals, rw * 0.9, label="%s (floor %.1f)" % (label, floor))
+    ax0.hlines([floor] * len(xs), [x - rw / 2 for x in xs], [x + rw / 2 for x in xs], colors=bars[0].get_facecolor(),
+               linestyles="dotted")
+    for x, v in zip(xs, vals):
+        ax0.annotate("%.2f" % v, (x, v), fontsize=6, ha="center", xytext=(0, 2), textcoords="offset points")
+ax0.axhline(1.0, color="black", linewidth=1, label="target: Embree's rate")
+ax0.set_xticks(range(len(scenes)))
+ax0.set_xticklabels(["%s\n%.0f B/tri" % (r["scene"], r.get("bytesPerTriangle", 0)) for r in data["ratios"]],
+                    fontsize=8)
+ax0.set_ylabel("default grid R[12,4] / Embree 3, 1 thread (median of runs)")
+ax0.set_title("Ratios to Embree (dotted: the floors; B/tri target <= 64)")
+ax0.legend(fontsize=7)
+ax0.grid(axis="y", alpha=0.3)
 width = 0.8 / max(1, len(engines))
 for k, eng in enumerate(engines):
     v1, v2 = [], []
@@ -59,7 +82,7 @@ ax1.legend(fontsize=7)
 ax1.grid(axis="y", which="both", alpha=0.3)
 
 markers = {"R": "o", "O": "s"}
-for s in scenes:
+for s in scenes if ax2 else []:
     t = [r for r in rows if r["scene"] == s and r["group"] == "table"]
     if not t:
         continue
@@ -67,12 +90,13 @@ for s in scenes:
     for r in t:
         ax2.annotate(kind(r["engine"]), (r["bytesPerTriangle"], r["closest1"]["median"]),
                      fontsize=6, xytext=(3, 2), textcoords="offset points", color=line[0].get_color())
-ax2.set_xscale("log")
-ax2.set_xlabel("bytes per triangle (structure + triangle store)")
-ax2.set_ylabel("closest hit, Mrays/s, 1 thread")
-ax2.set_title("The paper's tables: R[thr,N] and O[thr,w]")
-ax2.grid(alpha=0.3)
-ax2.legend(fontsize=7)
+if ax2:
+    ax2.set_xscale("log")
+    ax2.set_xlabel("bytes per triangle (structure + triangle store)")
+    ax2.set_ylabel("closest hit, Mrays/s, 1 thread")
+    ax2.set_title("The paper's tables: R[thr,N] and O[thr,w]")
+    ax2.grid(alpha=0.3)
+    ax2.legend(fontsize=7)
 if points:
     pscenes = []
     for r in points:
