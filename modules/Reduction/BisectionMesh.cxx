@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace art
 {
@@ -67,6 +68,32 @@ void BisectionMesh::InitKuhn(const int dims[3], const int cubes[3])
             VertexTets[v].push_back(id);
           }
         }
+}
+
+void BisectionMesh::InitFromTets(std::vector<LatticePoint> points, const std::vector<std::array<int, 4>>& tets)
+{
+  const int nv = static_cast<int>(points.size());
+  Verts = std::move(points);
+  Parent.assign(Verts.size(), { -1, -1 });
+  Quarter.assign(Verts.size(), 2);
+  Tets = tets;
+  Tag.assign(Tets.size(), 3);
+  Gen.assign(Tets.size(), 0);
+  Versions.assign(Tets.size(), 0);
+  VertexTets.assign(Verts.size(), {});
+  for (int t = 0; t < static_cast<int>(Tets.size()); ++t)
+  {
+    for (int v : Tets[t])
+    {
+      if (v < 0 || v >= nv)
+      {
+        throw Error("internal: a tet names vertex " + std::to_string(v) + " of " + std::to_string(nv));
+      }
+      VertexTets[v].push_back(t);
+    }
+  }
+  EdgeSplits = false;
+  Moved = true;
 }
 
 std::array<int, 2> BisectionMesh::RefinementEdge(int t) const

@@ -40,6 +40,7 @@ struct VoxelErrorReport
   std::vector<double> TetRms, TetMax, TetWeightedMax, TetWeightedSse;
   double Rms = 0, Max = 0;                 ///< over every voxel, data units
   double WeightedRms = 0, WeightedMax = 0; ///< sqrt(mean Error2), sqrt(max Error2)
+  long long Voxels = 0;                    ///< voxels the means are over
 };
 
 /// For edge choice, per edge e = (a, b) of a tet (BisectionMesh::EdgeCorners) and per position

@@ -168,7 +168,10 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bo
   grid->SetCells(VTK_TETRA, cells);
 
   vtkSmartPointer<vtkDataArray> values;
-  if (doubleValues)
+  if (m.Values.empty()) // a mesh without a field (a label map's, a surface's): no point scalars
+  {
+  }
+  else if (doubleValues)
   {
     values = vtkSmartPointer<vtkDoubleArray>::New();
   }
@@ -176,13 +179,16 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bo
   {
     values = vtkSmartPointer<vtkFloatArray>::New();
   }
-  values->SetName(m.ScalarName.c_str());
-  values->SetNumberOfTuples(nv);
-  for (vtkIdType i = 0; i < nv; ++i)
+  if (values)
   {
-    values->SetTuple1(i, m.Values[i]);
+    values->SetName(m.ScalarName.c_str());
+    values->SetNumberOfTuples(nv);
+    for (vtkIdType i = 0; i < nv; ++i)
+    {
+      values->SetTuple1(i, m.Values[i]);
+    }
+    grid->GetPointData()->SetScalars(values);
   }
-  grid->GetPointData()->SetScalars(values);
 
   auto cellArray = [&](const char* name, const std::vector<double>& a) {
     auto arr = vtkSmartPointer<vtkFloatArray>::New();
@@ -194,9 +200,12 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bo
     }
     grid->GetCellData()->AddArray(arr);
   };
-  cellArray("approximation_error", m.TetRms);
-  cellArray("max_error", m.TetMax);
-  grid->GetCellData()->SetActiveScalars("approximation_error");
+  if (!m.TetRms.empty())
+  {
+    cellArray("approximation_error", m.TetRms);
+    cellArray("max_error", m.TetMax);
+    grid->GetCellData()->SetActiveScalars("approximation_error");
+  }
 
   vtkFieldData* fd = grid->GetFieldData();
   auto field = [&](const char* name, double v) {

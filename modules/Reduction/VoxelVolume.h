@@ -51,6 +51,20 @@ struct VoxelVolume
       w[r] = Origin[r] + Direction[3 * r] * s[0] + Direction[3 * r + 1] * s[1] + Direction[3 * r + 2] * s[2];
     }
   }
+  /// Continuous voxel index coordinates of world position w (IndexToWorld's inverse).
+  void WorldToIndex(const double w[3], double ijk[3]) const
+  {
+    const double* d = Direction;
+    const double m[9] = { d[4] * d[8] - d[5] * d[7], d[2] * d[7] - d[1] * d[8], d[1] * d[5] - d[2] * d[4],
+      d[5] * d[6] - d[3] * d[8], d[0] * d[8] - d[2] * d[6], d[2] * d[3] - d[0] * d[5], d[3] * d[7] - d[4] * d[6],
+      d[1] * d[6] - d[0] * d[7], d[0] * d[4] - d[1] * d[3] };
+    const double det = d[0] * m[0] + d[1] * m[3] + d[2] * m[6];
+    const double r[3] = { w[0] - Origin[0], w[1] - Origin[1], w[2] - Origin[2] };
+    for (int a = 0; a < 3; ++a)
+    {
+      ijk[a] = (m[3 * a] * r[0] + m[3 * a + 1] * r[1] + m[3 * a + 2] * r[2]) / det / Spacing[a];
+    }
+  }
   /// Fills Range and Statistics from the samples; throws art::Error on an empty volume or a 2-D image.
   void Validate(const std::string& file = {});
 };
