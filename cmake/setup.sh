@@ -14,7 +14,7 @@ packages=(
   libvtk9-dev python3-vtk9 python3-matplotlib
   libopenimageio-dev libtbb-dev
   libgtest-dev libembree-dev nlohmann-json3-dev
-  libtet1.5-dev   # TetGen: modules/Meshing
+  libcgal-dev libtet1.5-dev   # CGAL Mesh_3 (brings GMP, MPFR, Boost headers), TetGen: modules/Meshing
   xvfb xauth
 )
 missing=()

@@ -97,6 +97,10 @@ TetMoments LeastSquaresFit::Gather(const BisectionMesh& mesh, int t, const std::
   double flatLo = -std::numeric_limits<double>::infinity(), flatHi = std::numeric_limits<double>::infinity();
   auto accumulate = [&](const auto* values) {
     r.ForEachVoxel(Volume.Dims, [&](long long idx, const double* l) {
+      if (Mask && !(*Mask)[idx])
+      {
+        return;
+      }
       double f = values[idx], w = 1.0;
       if (Imp)
       {
@@ -382,6 +386,10 @@ void LeastSquaresFit::EdgeMoments(const BisectionMesh& mesh, const std::vector<i
       bool first = true;
       auto pass = [&](const auto* values) {
         r.ForEachVoxel(Volume.Dims, [&](long long idx, const double* l) {
+          if (Mask && !(*Mask)[idx])
+          {
+            return;
+          }
           const double f = values[idx];
           if (first)
           {
@@ -432,6 +440,10 @@ void LeastSquaresFit::VertexVoxelRange(
       const TetRaster r = RasterOf(mesh, static_cast<int>(t));
       double a = inf, b = -inf;
       r.ForEachVoxel(Volume.Dims, [&](long long idx, const double*) {
+        if (Mask && !(*Mask)[idx])
+        {
+          return;
+        }
         const double f = Volume.Value(idx);
         a = std::min(a, f);
         b = std::max(b, f);
@@ -463,6 +475,7 @@ VoxelErrorReport LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const s
   out.TetWeightedMax.assign(nt, 0.0);
   out.TetWeightedSse.assign(nt, 0.0);
   std::vector<double> sse(nt, 0.0);
+  std::vector<long long> count(nt, 0);
   std::vector<double>& wsse = out.TetWeightedSse;
   ForEachRange(nt, 64, [&](long long t0, long long t1, Counters&) {
     for (long long t = t0; t < t1; ++t)
@@ -477,6 +490,10 @@ VoxelErrorReport LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const s
       long long n = 0;
       auto pass = [&](const auto* values) {
         r.ForEachVoxel(Volume.Dims, [&](long long idx, const double* l) {
+          if (Mask && !(*Mask)[idx])
+          {
+            return;
+          }
           const double u = c[0] * l[0] + c[1] * l[1] + c[2] * l[2] + c[3] * l[3];
           const double e = values[idx] - u;
           const double e2 = Imp ? Imp->Error2(idx, values[idx], u) : e * e;
@@ -489,6 +506,7 @@ VoxelErrorReport LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const s
       };
       Volume.WithSamples(pass);
       sse[t] = s;
+      count[t] = n;
       wsse[t] = ws;
       out.TetRms[t] = n ? std::sqrt(s / n) : 0.0;
       out.TetMax[t] = mx;
@@ -503,7 +521,16 @@ VoxelErrorReport LeastSquaresFit::VoxelErrors(const BisectionMesh& mesh, const s
     out.Max = std::max(out.Max, out.TetMax[t]);
     out.WeightedMax = std::max(out.WeightedMax, out.TetWeightedMax[t]);
   }
-  const double nvox = static_cast<double>(Volume.NumberOfVoxels());
+  out.Voxels = Volume.NumberOfVoxels(); // the mesh covers the box: every voxel is in one tet
+  if (Mask)
+  {
+    out.Voxels = 0;
+    for (long long n : count)
+    {
+      out.Voxels += n;
+    }
+  }
+  const double nvox = static_cast<double>(std::max<long long>(out.Voxels, 1));
   out.Rms = std::sqrt(total / nvox);
   out.WeightedRms = std::sqrt(wtotal / nvox);
   return out;

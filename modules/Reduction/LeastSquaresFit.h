@@ -40,7 +40,7 @@ struct VoxelErrorReport
   std::vector<double> TetRms, TetMax, TetWeightedMax, TetWeightedSse;
   double Rms = 0, Max = 0;                 ///< over every voxel, data units
   double WeightedRms = 0, WeightedMax = 0; ///< sqrt(mean Error2), sqrt(max Error2)
-  long long Voxels = 0;                    ///< voxels the means are over
+  long long Voxels = 0;                    ///< voxels the means are over (a mask's, inside the mesh)
 };
 
 /// For edge choice, per edge e = (a, b) of a tet (BisectionMesh::EdgeCorners) and per position
@@ -78,6 +78,10 @@ public:
   /// OpacityImportance::Weight at the current fit (`fit` of UpdateMoments), errors by Error2.
   LeastSquaresFit(const VoxelVolume& volume, double regularization = 0.5,
     const OpacityImportance* importance = nullptr);
+
+  /// Only voxels i with (*mask)[i] != 0 count, in every sum and error (a region of the volume,
+  /// RegionMask); null, the default: every voxel. Kept by reference; set before gathering.
+  void SetMask(const std::vector<uint8_t>* mask) { Mask = mask; }
 
   /// Re-gathers the moments of the listed tets (new or replaced); sizes to the mesh. With an
   /// importance, `fit` (vertex values, Extend-ed to the mesh) is the point the weights are taken at.
@@ -119,6 +123,7 @@ private:
   const VoxelVolume& Volume;
   double Regularization;
   const OpacityImportance* Imp;
+  const std::vector<uint8_t>* Mask = nullptr;
   std::vector<TetMoments> Mom;
 };
 } // namespace art

@@ -288,6 +288,11 @@ int vtkAdaptiveTetReducer::RequestData(
       levels->Initialize();
       return 1;
     }
+    if (this->UseRegion || this->Labels)
+    {
+      this->RequestRegion(input, volume, asDouble, output, levels, progress);
+      return 1;
+    }
     const std::vector<art::ReducedMesh> meshes = art::TetReducer(opt).Run(volume, &progress);
     if (meshes.empty())
     {
@@ -369,4 +374,8 @@ void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ImportanceRadius: " << this->ImportanceRadius << "\n";
   os << indent << "WeightedRMSError: " << this->WeightedRMSError << "\n";
   os << indent << "WeightedMaxError: " << this->WeightedMaxError << "\n";
+  os << indent << "Region: " << (this->UseRegion ? "" : "off, ") << this->Region[0] << " .. " << this->Region[1] << "\n";
+  os << indent << "Labels: " << this->Labels << " (background " << this->Background << ")\n";
+  os << indent << "MinimumIslandVoxels: " << this->MinimumIslandVoxels << "\n";
+  os << indent << "CompareWholeBox: " << this->CompareWholeBox << "\n";
 }

@@ -33,7 +33,17 @@
 
 #include <vector>
 
+class vtkImageData;
+class vtkMultiBlockDataSet;
 class vtkPiecewiseFunction;
+class vtkUnstructuredGrid;
+#ifndef __VTK_WRAP__
+namespace art
+{
+class Progress;
+struct VoxelVolume;
+}
+#endif
 
 class ADAPTIVERTREDUCTION_EXPORT vtkAdaptiveTetReducer : public vtkUnstructuredGridAlgorithm
 {
@@ -190,6 +200,64 @@ public:
   vtkSetClampMacro(ImportanceRadius, int, 0, 8);
   vtkGetMacro(ImportanceRadius, int);
 
+  ///@{
+  /**
+   * Mesh only the voxels whose value lies in [lo, hi] (the bone of a CT, the brain of an MRI):
+   * the mesh's boundary follows that region's surface (where the trilinear interpolant crosses
+   * lo or hi), pieces of fewer than MinimumIslandVoxels voxels are dropped, the voxels inside are
+   * fitted in the least-squares sense, and the region is meshed again to a size field adapted to
+   * the fit's error until TargetTets or TargetError (RMS inside the region) is met. The levels
+   * of AddLevel do not apply. Meshed by CGAL's Mesh_3 (AdaptiveRT::Meshing, in builds with
+   * ART_WITH_GPL_MESHING; otherwise the filter reports an error saying so). RemoveRegion goes
+   * back to the whole box. Field data then also hold region_low, region_high, region_voxels,
+   * covered_voxels, region_pieces, islands_dropped, island_voxels and meshings.
+   */
+  void SetRegion(double lo, double hi);
+  void RemoveRegion();
+  vtkGetVector2Macro(Region, double);
+  vtkGetMacro(UseRegion, bool);
+  ///@}
+
+  /**
+   * The input is a label map (integer values): one conforming multi-material mesh of every label
+   * but the Background, each tet tagged in the cell array "label", the interfaces between labels
+   * shared faces; to TargetTets (default off). Meshed by CGAL's Mesh_3, like SetRegion.
+   */
+  vtkSetMacro(Labels, bool);
+  vtkGetMacro(Labels, bool);
+  vtkBooleanMacro(Labels, bool);
+
+  /**
+   * The label a label map leaves unmeshed (default 0).
+   */
+  vtkSetMacro(Background, vtkIdType);
+  vtkGetMacro(Background, vtkIdType);
+
+  /**
+   * With SetRegion or Labels: connected pieces (26-neighbours) of fewer voxels are dropped (an
+   * island of a label inside another takes that label). -1 (the default): 27 or 0.01% of the
+   * region's voxels, whichever is larger.
+   */
+  vtkSetClampMacro(MinimumIslandVoxels, vtkIdType, -1, VTK_ID_MAX);
+  vtkGetMacro(MinimumIslandVoxels, vtkIdType);
+
+  /**
+   * With SetRegion: also reduce the whole box (the default reducer) until its RMS inside the
+   * region is as low, and put the tets it needed in field data whole_box_tets (default off: it
+   * takes longer than the region's own reduction).
+   */
+  vtkSetMacro(CompareWholeBox, bool);
+  vtkGetMacro(CompareWholeBox, bool);
+  vtkBooleanMacro(CompareWholeBox, bool);
+
+  /**
+   * Region figures of the last run: voxels meshed, islands dropped, whole-box tets of equal error
+   * (0 unless CompareWholeBox).
+   */
+  vtkGetMacro(RegionVoxels, vtkIdType);
+  vtkGetMacro(IslandsDropped, vtkIdType);
+  vtkGetMacro(WholeBoxTets, vtkIdType);
+
   /**
    * Figures of the last run (also in the output's field data).
    */
@@ -229,6 +297,16 @@ protected:
   vtkPiecewiseFunction* ScalarOpacity = nullptr;
   double ImportanceFloor = 0.02;
   int ImportanceRadius = 2;
+  bool UseRegion = false, Labels = false, CompareWholeBox = false;
+  double Region[2] = { 0.0, 0.0 };
+  vtkIdType Background = 0, MinimumIslandVoxels = -1;
+  vtkIdType RegionVoxels = 0, IslandsDropped = 0, WholeBoxTets = 0;
+
+#ifndef __VTK_WRAP__
+  /// The SetRegion / Labels path of RequestData (vtkAdaptiveTetReducerRegion.cxx): throws art::Error.
+  void RequestRegion(vtkImageData* input, const art::VoxelVolume& volume, bool asDouble,
+    vtkUnstructuredGrid* output, vtkMultiBlockDataSet* levels, art::Progress& progress);
+#endif
 
 private:
   vtkAdaptiveTetReducer(const vtkAdaptiveTetReducer&) = delete;

@@ -11,6 +11,7 @@
 #include "MeshQuality.h"
 #include "Progress.h"
 #include "cli/ProgressBar.h"
+#include "commands/RegionReduction.h"
 #include "rendering/DefaultFrame.h"
 #include "rendering/ReductionTargets.h"
 #include "rendering/TransferFunctionChoice.h"
@@ -69,6 +70,7 @@ void Declare(cli::Options& o)
     "reduce for this transfer function's opacity (a preset, e.g. ct-skin-bone, or a file of "
     "'scalar r g b opacity' lines, or a ParaView preset .json): tets go where opacity changes, "
     "and a value fitted past its voxels into a more opaque range is clamped to theirs");
+  cli::DeclareRegionOptions(o);
   cli::AddLoadOptions(o);
 }
 
@@ -324,9 +326,14 @@ int Run(const cli::Options& o)
 {
   const auto [in, outPath] = InputAndOutput(o);
   art::ReducerOptions opt = OptionsBeforeLoading(o);
+  const bool region = cli::WantsRegion(o);
 
   auto image = art::LoadVolume(in, cli::LoadOptionsFrom(o));
   art::RequireOneComponent(image, in);
+  if (region)
+  {
+    return cli::RunRegionReduction(o, in, outPath, image);
+  }
   const art::VoxelVolume volume = art::VolumeFromImage(image, in);
   WeightByTransferFunction(o, image, volume, opt);
   SetBudgets(o, volume.NumberOfVoxels(), opt);
@@ -368,7 +375,9 @@ cli::Registrar reg({ "reduce",
   "  adaptivert reduce data/ct-head-128.mha head.vtu --tets 20000\n"
   "  adaptivert reduce head.mha head.vtu --max-error 1% --metric rms\n"
   "  adaptivert reduce head.mha head.vtu --tets 1% --levels 0.01%,0.1%   (writes head_<n>.vtu too)\n"
-  "  adaptivert reduce data/ct-head-128.mha head.vtu --tets 50000 --tf ct-skin-bone\n",
+  "  adaptivert reduce data/ct-head-128.mha head.vtu --tets 50000 --tf ct-skin-bone\n"
+  "  adaptivert reduce data/ct-head-128.mha bone.vtu --region 300:3000 --tets 50000   (tets only in the bone)\n"
+  "  adaptivert reduce labels.nii organs.vtu --labels --tets 100000   (one mesh, cell array 'label')\n",
   Declare, Run });
 } // namespace
 #endif

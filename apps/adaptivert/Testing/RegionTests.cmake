@@ -1,0 +1,24 @@
+# `adaptivert reduce --region / --labels` (AdaptiveRT::Meshing, CGAL Mesh_3): a sphere of 1 in a
+# box of 0 meshed by value range (an open end is taken at the data's range + 1), two touching
+# labelled cubes as one mesh; refusals.
+set(_mesh "${CMAKE_SOURCE_DIR}/tests/data/meshing")
+art_expect_test(cli.reduce_region_sphere EXIT 0
+  STDOUT "region +0.5:1: 4,224 voxels \\(12.9% of the volume\\) in 1 piece.*boundary on the region's surface.*error +RMS [0-9.e-]+, max [0-9.e-]+ inside the region.*0 inverted, conforming"
+  ARGS reduce "${_mesh}/sphere-32.mha" "${_out}/region_sphere.vtu" --region 0.5:1 --tets 3000 --no-whole-box --quiet)
+art_expect_test(cli.reduce_region_json EXIT 0
+  STDOUT "^\\{\"input\":.*\"region_voxels\":4224,.*\"region\":\\[0.5,2\\].*\"whole_box_tets\":[0-9]+,"
+  ARGS reduce "${_mesh}/sphere-32.mha" "${_out}/region_sphere_json.vtu" --region 0.5: --tets 1500 --json --quiet)
+art_expect_test(cli.reduce_labels_cubes EXIT 0
+  STDOUT "labels +2 \\(1, 2\\), background 0: 4,096 voxels in 2 pieces.*interfaces shared.*conforming"
+  ARGS reduce "${_mesh}/cubes-24.mha" "${_out}/labels_cubes.vtu" --labels --tets 2000 --quiet)
+art_expect_test(cli.reduce_labels_background EXIT 0 STDOUT "labels +2 \\(0, 2\\), background 1: 11,776 voxels"
+  ARGS reduce "${_mesh}/cubes-24.mha" "${_out}/labels_cubes_bg.vtu" --labels --background 1 --tets 2000 --quiet)
+art_expect_test(cli.reduce_region_outside EXIT 1
+  STDERR "sphere-32.mha: no voxel lies in the region 5:6 \\(the values span 0 .. 1\\)" ONE_LINE_STDERR
+  ARGS reduce "${_mesh}/sphere-32.mha" "${_out}/never.vtu" --region 5:6 --tets 3000 --quiet)
+art_expect_test(cli.reduce_region_reversed EXIT 2 STDERR "--region 3:1 is empty: its low end is above its high end"
+  ONE_LINE_STDERR ARGS reduce "${_mesh}/sphere-32.mha" "${_out}/never.vtu" --region 3:1 --tets 3000)
+art_expect_test(cli.reduce_region_and_labels EXIT 2 STDERR "--region and --labels exclude each other" ONE_LINE_STDERR
+  ARGS reduce "${_mesh}/cubes-24.mha" "${_out}/never.vtu" --region 1:2 --labels --tets 3000)
+art_expect_test(cli.reduce_background_alone EXIT 2 STDERR "--background goes with --region or --labels" ONE_LINE_STDERR
+  ARGS reduce "${_mesh}/cubes-24.mha" "${_out}/never.vtu" --background 3 --tets 3000)
