@@ -48,7 +48,7 @@ std::string UsageText()
          "  --tf NAME|FILE       transfer function: auto (ct-skin-bone on CT in Hounsfield units, else\n"
          "                       from the data: background clear, a grey ramp over its robust range,\n"
          "                       labels in distinct colours), ct-skin-bone, ct-bone, grey-ramp,\n"
-         "                       constant, or a file of\n"
+         "                       constant, labels, or a file of\n"
          "                       'scalar r g b opacity' lines or a ParaView preset .json (default auto)\n"
          "  --frame patient|vtk  place a volume in LPS patient coordinates (default) or as VTK's readers\n"
          "                       and ParaView do (origin and spacing)\n"

@@ -250,7 +250,7 @@ void TransferFunction::ToVTK(vtkVolumeProperty* p) const
 
 std::vector<std::string> TransferFunction::PresetNames()
 {
-  return { "auto", "ct-skin-bone", "ct-bone", "grey-ramp", "constant" };
+  return { "auto", "ct-skin-bone", "ct-bone", "grey-ramp", "constant", "labels" };
 }
 
 namespace
@@ -354,6 +354,32 @@ TransferFunction TransferFunction::Preset(const std::string& name, double lo, do
   return Make(name, lo, hi, unitDistance, LooksLikeHU(lo, hi));
 }
 
+namespace
+{
+// A categorical table for label maps: one node per integer label in [lo, hi] (the first 512), in
+// the ten colours of Tableau's palette in turn, each half opaque per unit distance. A label
+// mesh's tets hold their label exactly, so no two labels' colours blend.
+std::vector<TransferFunction::Node> LabelNodes(double lo, double hi)
+{
+  static const double palette[10][3] = { { 0.12, 0.47, 0.71 }, { 1.0, 0.5, 0.05 }, { 0.17, 0.63, 0.17 },
+    { 0.84, 0.15, 0.16 }, { 0.58, 0.4, 0.74 }, { 0.55, 0.34, 0.29 }, { 0.89, 0.47, 0.76 }, { 0.5, 0.5, 0.5 },
+    { 0.74, 0.74, 0.13 }, { 0.09, 0.75, 0.81 } };
+  std::vector<TransferFunction::Node> n;
+  const double first = std::ceil(lo), last = std::min(std::floor(hi), first + 511);
+  for (double k = first; k <= last; ++k)
+  {
+    const auto& c = palette[static_cast<long long>(std::fabs(k)) % 10];
+    n.push_back({ k, { c[0], c[1], c[2] }, 0.5, 0 });
+  }
+  if (n.size() < 2) // no integer or one in the range: its colour over all of it
+  {
+    const auto& c = palette[n.empty() ? 0 : static_cast<long long>(std::fabs(first)) % 10];
+    n = { { lo, { c[0], c[1], c[2] }, 0.5, 0 }, { hi, { c[0], c[1], c[2] }, 0.5, 0 } };
+  }
+  return n;
+}
+} // namespace
+
 TransferFunction TransferFunction::Make(const std::string& name, double lo, double hi, double unitDistance, bool hu)
 {
   if (!(hi > lo))
@@ -391,6 +417,10 @@ TransferFunction TransferFunction::Make(const std::string& name, double lo, doub
   else if (kind == "constant")
   {
     n = { { lo, { 0, 0, 0 }, 0.05, 0 }, { hi, { 1, 1, 1 }, 0.05, 0 } };
+  }
+  else if (kind == "labels")
+  {
+    n = LabelNodes(lo, hi);
   }
   else
   {

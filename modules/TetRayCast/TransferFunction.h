@@ -41,7 +41,7 @@ public:
 
   /// The colour, scalar-opacity functions and unit distance of `p` (component 0).
   static TransferFunction FromVTK(vtkVolumeProperty* p);
-  /// "ct-skin-bone", "ct-bone", "grey-ramp", "constant" laid over the data range [lo, hi]
+  /// "ct-skin-bone", "ct-bone", "grey-ramp", "constant", "labels" (one colour per integer) laid over the data range [lo, hi]
   /// (CT presets use Hounsfield units when the range looks like CT, else fractions of it), their
   /// opacities per unitDistance world units (PresetUnitDistance gives the data's). "auto" is
   /// ct-skin-bone when the range looks like CT, else grey-ramp (PresetFor looks at the samples).

@@ -283,3 +283,9 @@ art_expect_test(cli.render_bad_fit EXIT 2 STDERR "--fit expects view or orbit, g
 art_expect_test(cli.render_json_camera EXIT 0
   STDOUT "\"camera\":\\{\"position\":\\[[-0-9.e]+,[-0-9.e]+,[-0-9.e]+\\],\"focal_point\":\\[.*\"view_angle\":30,"
   ARGS render "${_synthetic}/labels.vti" -o "${ART_TEST_OUTPUT}/camera.png" --size 32x32 --json --no-error -q)
+# A label mesh (reduce --labels: cell array "label") in the categorical table, each tet in its
+# label's colour up to the interface; the cell values averaged to the points drew it grey.
+art_render_baseline_test(image.labels_categorical BASELINE labels-cubes.png MIN_PSNR 40 MIN_SSIM 0.98
+  ARGS "${CMAKE_SOURCE_DIR}/tests/data/meshing/cubes-labels.vtu" --size 96x96 --azimuth 30 --elevation 30)
+art_expect_test(cli.render_label_mesh EXIT 0 STDOUT "mesh +label mesh: 1044 tets"
+  ARGS render "${CMAKE_SOURCE_DIR}/tests/data/meshing/cubes-labels.vtu" -o "${ART_TEST_OUTPUT}/labels.png" --size 32x32 --quiet)

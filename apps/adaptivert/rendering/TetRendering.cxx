@@ -11,6 +11,7 @@
 #include "cli/Json.h"
 #include "cli/LoadOptions.h"
 #include "rendering/DefaultFrame.h"
+#include "rendering/LabelMesh.h"
 #include "rendering/MeshCache.h"
 #include "ParallelTiles.h"
 #include "cli/ProgressBar.h"
@@ -61,7 +62,7 @@ void Declare(cli::Options& o)
   o.Add("tf", 0, "NAME|FILE",
     "transfer function: a preset (auto = ct-skin-bone on CT in Hounsfield units, else from the data: background "
     "clear, a grey ramp over its 1st-99.5th percentiles, labels in distinct colours; under --mip a window; ct-skin-bone, "
-    "ct-bone, grey-ramp, constant) or a file of 'scalar r g b opacity' lines, or a ParaView preset exported as .json",
+    "ct-bone, grey-ramp, constant, labels: one colour per integer, the default for a label mesh) or a file of 'scalar r g b opacity' lines, or a ParaView preset exported as .json",
     "auto");
   o.Add("unit-distance", 0, "U",
     "world distance over which the transfer function's opacity applies (default: 1 for CT in Hounsfield "
@@ -128,9 +129,10 @@ void RefuseContradictions(const cli::Options& o)
 // A preset's opacities are per unit distance: 1 mm on CT in HU of mm voxels, else the data's sample spacing;
 // --unit-distance overrides that and a file's own unit-distance line.
 // `mesh`: the tet mesh built from `data` (its used, merged points), for a preset's unit distance.
-art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo, double hi, const art::TetMesh* mesh = nullptr)
+art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo, double hi, const art::TetMesh* mesh = nullptr,
+  bool labels = false)
 {
-  const std::string tf = o.Get("tf");
+  const std::string tf = labels && o.Get("tf") == "auto" ? "labels" : o.Get("tf");
   art::TransferFunction f;
   if (art::TransferFunction::NamesFile(tf))
   {
@@ -431,12 +433,19 @@ void MakeVolumeTets(const cli::Options& o, const std::string& input, Scene& sc, 
 void LoadMeshScene(const cli::Options& o, const std::string& input, Scene& sc)
 {
   auto grid = art::LoadMesh(input);
+  std::string array = art::AddComponentArray(grid, o.Get("array"), input); // NAME:magnitude, NAME:N
+  // A label mesh: each tet in its label's colour (a categorical table unless --tf says otherwise).
+  const bool labels = cli::IsLabelMesh(grid, array);
+  if (labels)
+  {
+    grid = cli::SplitByLabel(grid);
+    array = "label";
+  }
   sc.grid = grid;
-  const std::string array = art::AddComponentArray(grid, o.Get("array"), input); // NAME:magnitude, NAME:N
   sc.mesh = art::TetMesh::FromVTK(grid, array, &sc.note, input);
-  sc.meshLabel = "tet mesh";
+  sc.meshLabel = labels ? "label mesh" : "tet mesh";
   sc.range[0] = sc.mesh.ScalarRange(0), sc.range[1] = sc.mesh.ScalarRange(1);
-  sc.settings = MakeSettings(o, MakeTF(o, grid, sc.range[0], sc.range[1], &sc.mesh));
+  sc.settings = MakeSettings(o, MakeTF(o, grid, sc.range[0], sc.range[1], &sc.mesh, labels));
 }
 
 // A transfer function made for other data (another modality or units) draws nothing: say so

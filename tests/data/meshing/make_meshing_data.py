@@ -2,7 +2,8 @@
 """Writes the meshing tests' inputs: a torus (R 1, r 0.4) as a closed PLY whose vertices lie on
 it, the same with one triangle removed (3 open edges), two tori through each other (closed but
 self-intersecting); a sphere of 1 (radius 10 voxels) in a box of 0, and two touching labelled
-cubes (labels 1 and 2 meeting at z = 11.5) as MetaImages."""
+cubes (labels 1 and 2 meeting at z = 11.5) as MetaImages. cubes-labels.vtu is made from the last:
+`adaptivert reduce cubes-24.mha cubes-labels.vtu --labels --tets 1000`."""
 import math
 import numpy as np
 import vtk
