@@ -18,3 +18,7 @@ art_expect_test(cli.tetrahedralize_volume_input EXIT 1
 art_expect_test(cli.tetrahedralize_no_budget EXIT 2 STDERR "give --tets N or --max-volume V" ONE_LINE_STDERR
   ARGS tetrahedralize "${_mesh}/torus.ply" "${_out}/never.vtu")
 art_expect_test(cli.tetrahedralize_help EXIT 0 STDOUT "examples:.*adaptivert tetrahedralize" ARGS tetrahedralize --help)
+# A budget below what the surface itself needs is said, not met silently.
+art_expect_test(cli.tetrahedralize_budget_below_surface EXIT 0
+  STDOUT "output .*torus_small.vtu \\(more tets than --tets: TetGen's quality bounds on this surface alone ask for that many\\)"
+  ARGS tetrahedralize "${_mesh}/torus.ply" "${_out}/torus_small.vtu" --tets 500 --quiet)

@@ -180,7 +180,9 @@ void Print(const cli::Options& o, const std::string& in, const std::string& out,
   }
   std::printf("quality      min dihedral %.1f deg, radius ratio min %.3f mean %.3f, %lld inverted\n",
     q.MinDihedralDegrees, q.MinRadiusRatio, q.MeanRadiusRatio, q.Inverted);
-  std::printf("output       %s\n", out.c_str());
+  const bool over = m.TargetTets > 0 && m.NumberOfTets() > 1.1 * m.TargetTets;
+  std::printf("output       %s%s\n", out.c_str(),
+    over ? " (more tets than --tets: TetGen's quality bounds on this surface alone ask for that many)" : "");
   std::printf("time         %.2f s\n", m.BuildSeconds);
 }
 #endif
