@@ -6,6 +6,7 @@
 #include "DataLoader.h"
 #include "Error.h"
 #include "TetMesh.h"
+#include "rendering/LabelMesh.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -58,6 +59,7 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const art:
   ViewerScene s;
   const std::string& array = load.Array;
   std::optional<art::TetMesh> mesh; // a mesh's used, merged points, for a preset's unit distance
+  bool labels = false;              // a label mesh (cell array "label"), split per label
   const art::DataKind kind = art::KindOf(file, load);
   vtkSmartPointer<vtkDataObject> data =
     kind == art::DataKind::Volume ? vtkSmartPointer<vtkDataObject>(art::LoadVolume(file, load)) : art::Load(file);
@@ -94,6 +96,12 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const art:
     vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(data);
     std::string note;
     s.ArrayName = art::AddComponentArray(grid, array, file); // NAME:magnitude, NAME:N
+    if (cli::IsLabelMesh(grid, s.ArrayName)) // each tet in its label's colour, as render draws it
+    {
+      grid = cli::SplitByLabel(grid);
+      s.ArrayName = "label";
+      labels = true;
+    }
     s.ArrayOnCells = !s.ArrayName.empty() && !grid->GetPointData()->GetArray(s.ArrayName.c_str()) &&
       grid->GetCellData()->GetArray(s.ArrayName.c_str());
     mesh.emplace(art::TetMesh::FromVTK(grid, s.ArrayName, &note, file)); // checks scalars and cells
@@ -106,7 +114,8 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const art:
   // A preset's unit distance follows the data (1 mm on CT in HU of mm voxels, else its sample spacing), as in render.
   s.Transfer = tf.find_first_of("./") != std::string::npos
     ? art::TransferFunction::FromFile(tf)
-    : art::TransferFunction::PresetFor(tf, vtkDataSet::SafeDownCast(data), s.Range[0], s.Range[1], mesh ? &*mesh : nullptr);
+    : art::TransferFunction::PresetFor(labels && tf == "auto" ? "labels" : tf, vtkDataSet::SafeDownCast(data),
+        s.Range[0], s.Range[1], mesh ? &*mesh : nullptr);
   art::RenderSettings shown;
   shown.tf = s.Transfer;
   s.Object = s.Image ? art::VisibleBounds(s.Image, shown) : art::VisibleBounds(*mesh, shown);
