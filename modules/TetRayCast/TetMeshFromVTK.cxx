@@ -13,7 +13,6 @@
 #include <vtkCellData.h>
 #include <vtkCellDataToPointData.h>
 #include <vtkCellType.h>
-#include <vtkCellTypes.h>
 #include <vtkDataArray.h>
 #include <vtkDataSetTriangleFilter.h>
 #include <vtkFieldData.h>
@@ -362,13 +361,21 @@ TetMesh TetMesh::FromVTK(vtkUnstructuredGrid* grid, const std::string& array, st
   vtkIdType lower = 0;
   bool low[256] = {}; // by cell type: of lower dimension than 3
   {
-    vtkNew<vtkCellTypes> types;
-    grid->GetCellTypes(types);
+    // The distinct cell types by a scan (GetCellTypes(vtkCellTypes*) is deprecated in VTK 9.2,
+    // its successor missing in 9.1).
+    bool seen[256] = {};
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+    {
+      seen[grid->GetCellType(c)] = true;
+    }
     bool anyLower = false;
     vtkNew<vtkGenericCell> cell;
-    for (vtkIdType k = 0; k < types->GetNumberOfTypes(); ++k)
+    for (int type = 0; type < 256; ++type)
     {
-      const unsigned char type = types->GetCellType(k);
+      if (!seen[type])
+      {
+        continue;
+      }
       cell->SetCellType(type);
       low[type] = cell->GetCellDimension() < 3;
       anyLower = anyLower || low[type];
