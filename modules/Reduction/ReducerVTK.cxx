@@ -25,6 +25,12 @@
 
 namespace art
 {
+bool ReducedAsDouble(int type)
+{
+  return type == VTK_DOUBLE || type == VTK_LONG_LONG || type == VTK_UNSIGNED_LONG_LONG || type == VTK_LONG ||
+    type == VTK_UNSIGNED_LONG || type == VTK_ID_TYPE || type == VTK_INT || type == VTK_UNSIGNED_INT;
+}
+
 VoxelVolume VolumeFromImage(vtkImageData* image, const std::string& file)
 {
   if (!image)
@@ -95,9 +101,7 @@ VoxelVolume VolumeFromImage(vtkImageData* image, const std::string& file)
   {
     throw Error("the scalar array does not match the image dimensions", file);
   }
-  const int type = s->GetDataType();
-  v.DoubleValues = type == VTK_DOUBLE || type == VTK_LONG_LONG || type == VTK_UNSIGNED_LONG_LONG ||
-    type == VTK_LONG || type == VTK_UNSIGNED_LONG || type == VTK_ID_TYPE || type == VTK_INT || type == VTK_UNSIGNED_INT;
+  v.DoubleValues = ReducedAsDouble(s->GetDataType());
   // The reducer's own copy of the samples; TetReducer::Run checks the rest of what it needs.
   const double copyBytes = (v.DoubleValues ? 8.0 : 4.0) * double(n), available = AvailableMemoryBytes();
   if (ExceedsAvailableMemory(copyBytes, available))

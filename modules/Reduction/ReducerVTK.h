@@ -22,6 +22,9 @@ namespace art
 /// for an empty or 2-D image, several components, no scalars, or NaN values.
 ADAPTIVERTREDUCTION_EXPORT VoxelVolume VolumeFromImage(vtkImageData* image, const std::string& file = {});
 
+/// Are samples of this VTK type kept (and written) as double? float and smaller types are not.
+ADAPTIVERTREDUCTION_EXPORT bool ReducedAsDouble(int vtkType);
+
 /// The output grid; `doubleValues` selects double rather than float point scalars. `quality`:
 /// MeasureQuality of `mesh` when already known (it takes a while on tens of millions of tets).
 ADAPTIVERTREDUCTION_EXPORT vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(

@@ -3,6 +3,7 @@
 #include "CellVoxels.h"
 
 #include "Error.h"
+#include "PieceReduction.h"
 #include "Progress.h"
 #include "ReducerVTK.h"
 #include "TetReducer.h"
@@ -12,6 +13,7 @@
 #include <vtkAbstractArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkDataSetAttributes.h>
@@ -20,6 +22,7 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 #include <vtkPiecewiseFunction.h>
 #include <vtkPointData.h>
@@ -35,14 +38,121 @@ vtkAdaptiveTetReducer::vtkAdaptiveTetReducer()
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
 vtkAdaptiveTetReducer::~vtkAdaptiveTetReducer()
 {
   this->SetScalarOpacity(nullptr);
+  this->SetController(nullptr);
 }
 
 vtkCxxSetObjectMacro(vtkAdaptiveTetReducer, ScalarOpacity, vtkPiecewiseFunction);
+vtkCxxSetObjectMacro(vtkAdaptiveTetReducer, Controller, vtkMultiProcessController);
+
+namespace
+{
+// The piece asked of the output port the request came from.
+struct Piece
+{
+  int Index = 0, Count = 1;
+};
+
+Piece RequestedPiece(vtkInformation* request, vtkInformationVector* outputVector)
+{
+  const int port = request && request->Has(vtkExecutive::FROM_OUTPUT_PORT()) ? request->Get(vtkExecutive::FROM_OUTPUT_PORT()) : 0;
+  vtkInformation* out = outputVector->GetInformationObject(port >= 0 && port < 2 ? port : 0);
+  Piece p;
+  if (out->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
+  {
+    p.Index = out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+  }
+  if (out->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()))
+  {
+    p.Count = std::max(1, out->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+  }
+  return p;
+}
+
+// This process's part of `image` (the extent PieceExtent gives it), reduced with every other
+// process's part (art::PieceReduction). A part thinner than two voxels along an axis holds none.
+std::vector<art::ReducedMesh> ReduceOwnPiece(vtkImageData* image, const int whole[6], const Piece& piece,
+  vtkMultiProcessController* controller, const art::ReducerOptions& opt, art::Progress* pilot, art::Progress* progress,
+  art::PieceFigures& figures, art::VoxelVolume& volume)
+{
+  int ext[6], have[6];
+  art::PieceExtent(whole, piece.Index, piece.Count, ext);
+  image->GetExtent(have);
+  std::string failure;
+  bool holds = true;
+  for (int a = 0; a < 3; ++a)
+  {
+    holds = holds && ext[2 * a] <= ext[2 * a + 1] && (ext[2 * a] < ext[2 * a + 1] || whole[2 * a] == whole[2 * a + 1]);
+  }
+  try
+  {
+    vtkDataArray* s = image->GetPointData()->GetScalars();
+    volume.Name = s && s->GetName() ? s->GetName() : "scalars";
+    volume.DoubleValues = s && art::ReducedAsDouble(s->GetDataType());
+    if (holds)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        if (have[2 * a] > ext[2 * a] || have[2 * a + 1] < ext[2 * a + 1])
+        {
+          auto text = [](const int* e) {
+            std::string t;
+            for (int i = 0; i < 6; ++i)
+            {
+              t += (i ? " " : "") + std::to_string(e[i]);
+            }
+            return t;
+          };
+          throw art::Error("piece " + std::to_string(piece.Index) + " of " + std::to_string(piece.Count) +
+            ": the input holds the extent " + text(have) + ", not all of " + text(ext));
+        }
+      }
+      vtkNew<vtkImageData> part;
+      part->ShallowCopy(image);
+      if (!std::equal(ext, ext + 6, have))
+      {
+        part->Crop(ext); // a reader that gave more than it was asked
+      }
+      volume = art::VolumeFromImage(part);
+    }
+  }
+  catch (const std::exception& e)
+  {
+    failure = e.what();
+  }
+  return art::PieceReduction(controller).Run(opt, failure.empty() ? &volume : nullptr, failure, pilot, progress, figures);
+}
+
+// The final mesh's figures are the whole volume's (its tets and vertices stay this piece's).
+void SetWholeFigures(art::ReducedMesh& m, const art::PieceFigures& f)
+{
+  m.Rms = f.Rms;
+  m.Max = f.Max;
+  m.WeightedRms = f.WeightedRms;
+  m.WeightedMax = f.WeightedMax;
+  m.Range[0] = f.Range[0];
+  m.Range[1] = f.Range[1];
+}
+
+void AddPieceFields(vtkDataObject* out, int pieces, const art::PieceFigures& f)
+{
+  auto field = [out](const char* name, double v) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->SetNumberOfTuples(1);
+    a->SetValue(0, v);
+    out->GetFieldData()->AddArray(a);
+  };
+  field("pieces", pieces);
+  field("total_tets", static_cast<double>(f.Tets));
+  field("piece_target_tets", static_cast<double>(f.TargetTets));
+}
+} // namespace
 
 vtkMTimeType vtkAdaptiveTetReducer::GetMTime()
 {
@@ -103,12 +213,31 @@ int vtkAdaptiveTetReducer::FillOutputPortInformation(int port, vtkInformation* i
 }
 
 int vtkAdaptiveTetReducer::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // The fit needs every voxel: always ask for the whole extent, as one piece. The piece request
-  // copied from the output (a parallel writer, ParaView in parallel) made an image source split
-  // its extent: each piece was a reduction of one slab, with the whole budget.
   vtkInformation* in = inputVector[0]->GetInformationObject(0);
+  const Piece piece = RequestedPiece(request, outputVector);
+  if (art::OnePiecePerProcess(this->Controller, piece.Index, piece.Count) &&
+    in->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    // One piece per process: this process's part of the extent only, from a source that can read
+    // a part (VTK's XML readers, .vti and .pvti). The others (vtkMetaImageReader: asked for a part
+    // of a compressed .mha it wrote the whole volume past its buffer) read it all; RequestData
+    // then takes the part.
+    int ext[6];
+    const int* whole = in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+    art::PieceExtent(whole, piece.Index, piece.Count, ext);
+    const bool part = in->Has(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) && in->Get(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT());
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), part ? ext : whole, 6);
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), part ? piece.Index : 0);
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), part ? piece.Count : 1);
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    in->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
+    return 1;
+  }
+  // Otherwise the fit needs every voxel: ask for the whole extent, as one piece. The piece request
+  // copied from the output (a parallel writer) made an image source split its extent: each piece
+  // was a reduction of one slab, with the whole budget.
   if (in->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
   {
     in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
@@ -130,12 +259,12 @@ int vtkAdaptiveTetReducer::RequestData(
   // A run that fails or is aborted leaves no figures of an earlier one behind.
   this->RMSError = this->MaxError = this->BuildSeconds = std::numeric_limits<double>::quiet_NaN();
   this->WeightedRMSError = this->WeightedMaxError = std::numeric_limits<double>::quiet_NaN();
-  // One mesh for the whole volume: piece 0 of a piece request holds it, the other pieces are
-  // empty (they held a copy each, or a reduction of their slab), so the pieces add up to it.
-  const int port = request && request->Has(vtkExecutive::FROM_OUTPUT_PORT()) ? request->Get(vtkExecutive::FROM_OUTPUT_PORT()) : 0;
-  vtkInformation* outInfo = outputVector->GetInformationObject(port >= 0 && port < 2 ? port : 0);
-  const bool emptyPiece = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
-    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0;
+  // One piece per process: each reduces its part. Otherwise one mesh for the whole volume: piece
+  // 0 of a piece request holds it, the other pieces are empty (they held a copy each, or a
+  // reduction of their slab), so the pieces add up to it.
+  const Piece piece = RequestedPiece(request, outputVector);
+  const bool distributed = art::OnePiecePerProcess(this->Controller, piece.Index, piece.Count);
+  const bool emptyPiece = !distributed && piece.Index > 0;
   if (this->TargetTets <= 0 && this->TargetError < 0)
   {
     vtkErrorMacro("Set TargetTets or TargetError.");
@@ -187,15 +316,21 @@ int vtkAdaptiveTetReducer::RequestData(
   // observer's SetAbortExecute(1) cancels the reduction at the next level, as VTK's filters stop.
   // With relocation the reduction reports its stages in turn (each 0 -> 1): the first half is
   // the refinement, the second the relocation; VTK's progress only rises.
+  // A piece's pilot run (art::PieceReduction) takes the first tenth.
   double shown = 0.0;
-  art::Progress progress([this, &progress, &shown, &opt](double f, const std::string& stage) {
-    const double g = !opt.RelocateVertices ? f : (stage == "relocate" ? 0.5 + 0.5 * f : 0.5 * f);
+  const double pilotPart = distributed && opt.TargetTets > 0 ? 0.1 : 0.0;
+  auto report = [this, &shown](double g, art::Progress& p) {
     shown = std::max(shown, g);
     this->UpdateProgress(shown);
     if (this->GetAbortExecute())
     {
-      progress.Cancel();
+      p.Cancel();
     }
+  };
+  art::Progress pilot([&report, &pilot, pilotPart](double f, const std::string&) { report(pilotPart * f, pilot); });
+  art::Progress progress([&report, &progress, &opt, pilotPart](double f, const std::string& stage) {
+    const double g = !opt.RelocateVertices ? f : (stage == "relocate" ? 0.5 + 0.5 * f : 0.5 * f);
+    report(pilotPart + (1.0 - pilotPart) * g, progress);
   });
   try
   {
@@ -206,7 +341,8 @@ int vtkAdaptiveTetReducer::RequestData(
     vtkInformation* asked = this->GetInputArrayInformation(0);
     const bool askedCells = asked && asked->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
       asked->Get(vtkDataObject::FIELD_ASSOCIATION()) == vtkDataObject::FIELD_ASSOCIATION_CELLS;
-    if (!chosen && asked && asked->Has(vtkDataObject::FIELD_NAME()))
+    // An empty name (ParaView's Python before the input's arrays are known) asks for nothing.
+    if (!chosen && asked && asked->Has(vtkDataObject::FIELD_NAME()) && *asked->Get(vtkDataObject::FIELD_NAME()))
     {
       // A named array that is not there: say so (it used to reduce the active scalars instead),
       // naming the association asked for (a missing cell array was 'no point array').
@@ -273,11 +409,30 @@ int vtkAdaptiveTetReducer::RequestData(
         art::TakeComponent(v, this->VectorMode == MAGNITUDE ? art::Magnitude : this->VectorComponent));
       image = reduced;
     }
-    const art::VoxelVolume volume = art::VolumeFromImage(image);
+    art::VoxelVolume volume;
+    std::vector<art::ReducedMesh> meshes;
+    art::PieceFigures whole;
+    if (distributed)
+    {
+      if (onCells)
+      {
+        vtkWarningMacro("Cell values reduced in parallel: each piece's mesh spans its own cells' centres, a cell's "
+                        "width short of the next piece's.");
+      }
+      int ext[6];
+      image->GetExtent(ext);
+      vtkInformation* in = inputVector[0]->GetInformationObject(0);
+      const int* wholeExtent = onCells ? ext : in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+      meshes = ReduceOwnPiece(image, wholeExtent, piece, this->Controller, opt, &pilot, &progress, whole, volume);
+    }
+    else
+    {
+      volume = art::VolumeFromImage(image);
+    }
     // Double for the types VolumeFromImage reads as double (int32 and 64-bit too), as reduce writes
     // them: int32 values past 2^24 were rounded in a float array the figures knew nothing of.
     const bool asDouble = volume.DoubleValues;
-    if (emptyPiece)
+    if (emptyPiece || (distributed && meshes.empty()))
     {
       // No tets, but the points and arrays of piece 0 (a parallel writer's summary is made from
       // the last piece it wrote: it found no points there).
@@ -293,14 +448,25 @@ int vtkAdaptiveTetReducer::RequestData(
       this->RequestRegion(input, volume, asDouble, output, levels, progress);
       return 1;
     }
-    const std::vector<art::ReducedMesh> meshes = art::TetReducer(opt).Run(volume, &progress);
+    if (!distributed)
+    {
+      meshes = art::TetReducer(opt).Run(volume, &progress);
+    }
     if (meshes.empty())
     {
       vtkErrorMacro("The reduction produced no mesh.");
       return 0;
     }
+    if (distributed)
+    {
+      SetWholeFigures(meshes.back(), whole);
+    }
     const art::ReducedMesh& last = meshes.back();
     output->ShallowCopy(art::ToUnstructuredGrid(last, asDouble));
+    if (distributed)
+    {
+      AddPieceFields(output, piece.Count, whole);
+    }
     this->RMSError = last.Rms;
     this->MaxError = last.Max;
     this->BuildSeconds = last.BuildSeconds;
@@ -338,7 +504,7 @@ int vtkAdaptiveTetReducer::RequestData(
   }
   catch (const art::Error& e)
   {
-    if (progress.Cancelled())
+    if (progress.Cancelled() || pilot.Cancelled())
     {
       // Aborted: empty outputs, no error (a previous run's mesh must not pass for this one's).
       output->Initialize();

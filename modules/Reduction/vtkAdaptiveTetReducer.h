@@ -22,8 +22,14 @@
  * at its centre, as the file loader reads them: the mesh spans the cell centres.
  * The input needs one scalar component and at least 2 voxels along each axis; any scalar type,
  * spacing, origin and direction. Progress events are fired between refinement levels.
- * The whole extent is always read as one piece; under a piece request (a parallel writer,
- * ParaView in parallel) piece 0 holds the mesh and the other pieces are empty.
+ * Pieces: under a request for piece p of n with a Controller of n processes, this being process
+ * p (pvbatch or pvserver under MPI), each process asks for and reduces only its part of the
+ * extent (VTK's block split; neighbours share a layer of voxels, so their meshes meet without a
+ * gap, though not vertex to vertex), and the tet budget and levels are shared out by each part's
+ * error (art::PieceReduction): no process holds the whole volume. The field data's errors, range
+ * and total_tets are then the whole volume's; tets, vertices and piece_target_tets this piece's.
+ * Serial (piece 0 of 1), or pieces without such a controller (a writer streaming pieces in one
+ * process): the whole extent is read as one piece, piece 0 holds the mesh, the others are empty.
  */
 #ifndef vtkAdaptiveTetReducer_h
 #define vtkAdaptiveTetReducer_h
@@ -35,6 +41,7 @@
 
 class vtkImageData;
 class vtkMultiBlockDataSet;
+class vtkMultiProcessController;
 class vtkPiecewiseFunction;
 class vtkUnstructuredGrid;
 #ifndef __VTK_WRAP__
@@ -267,6 +274,13 @@ public:
   vtkGetMacro(WeightedRMSError, double);
   vtkGetMacro(WeightedMaxError, double);
 
+  /**
+   * The processes among which pieces are shared (default: the global controller, as ParaView and
+   * vtkMPIController set it; none in a serial program).
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+
   vtkMTimeType GetMTime() override;
 
 protected:
@@ -295,6 +309,7 @@ protected:
   double RMSError = 0.0, MaxError = 0.0, BuildSeconds = 0.0;
   double WeightedRMSError = 0.0, WeightedMaxError = 0.0;
   vtkPiecewiseFunction* ScalarOpacity = nullptr;
+  vtkMultiProcessController* Controller = nullptr;
   double ImportanceFloor = 0.02;
   int ImportanceRadius = 2;
   bool UseRegion = false, Labels = false, CompareWholeBox = false;

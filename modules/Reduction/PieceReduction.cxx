@@ -1,0 +1,174 @@
+#include "PieceReduction.h"
+
+#include "Error.h"
+
+#include <vtkCommunicator.h>
+#include <vtkExtentTranslator.h>
+#include <vtkMultiProcessController.h>
+#include <vtkNew.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+namespace art
+{
+namespace
+{
+// The pilot's budget, as a fraction of the piece's voxel-proportional share: its error ranks the
+// pieces well (tests/benchmarks/paraview-results/README.md) at a fraction of the final run's time.
+constexpr double PilotFraction = 1.0 / 8.0;
+constexpr long long SmallestBudget = 48;
+
+double SquaredError(const ReducedMesh& m, long long voxels)
+{
+  const double e = m.Weighted ? m.WeightedRms : m.Rms;
+  return e * e * double(voxels);
+}
+
+// Runs `step` unless this process already failed; an error becomes this process's failure.
+template <class F>
+void Attempt(std::string& failure, F&& step)
+{
+  if (!failure.empty())
+  {
+    return;
+  }
+  try
+  {
+    step();
+  }
+  catch (const std::exception& e)
+  {
+    failure = e.what();
+    if (failure.empty())
+    {
+      failure = "the reduction failed";
+    }
+  }
+}
+
+void ThrowIfAnyFailed(double failed, const std::string& failure)
+{
+  if (failed > 0)
+  {
+    throw Error(failure.empty() ? "another piece of the volume could not be reduced" : failure);
+  }
+}
+} // namespace
+
+void PieceExtent(const int whole[6], int piece, int pieces, int extent[6])
+{
+  int w[6], e[6];
+  std::copy(whole, whole + 6, w);
+  vtkNew<vtkExtentTranslator> split;
+  split->PieceToExtentThreadSafe(piece, pieces, 0, w, e, vtkExtentTranslator::BLOCK_MODE, 0);
+  std::copy(e, e + 6, extent);
+}
+
+bool OnePiecePerProcess(vtkMultiProcessController* controller, int piece, int pieces)
+{
+  return controller && pieces > 1 && controller->GetNumberOfProcesses() == pieces &&
+    controller->GetLocalProcessId() == piece;
+}
+
+void PieceReduction::Sum(std::vector<double>& values) const
+{
+  std::vector<double> out(values.size());
+  this->Controller->AllReduce(values.data(), out.data(), static_cast<vtkIdType>(values.size()), vtkCommunicator::SUM_OP);
+  values = out;
+}
+
+void PieceReduction::Maximum(std::vector<double>& values) const
+{
+  std::vector<double> out(values.size());
+  this->Controller->AllReduce(values.data(), out.data(), static_cast<vtkIdType>(values.size()), vtkCommunicator::MAX_OP);
+  values = out;
+}
+
+std::vector<ReducedMesh> PieceReduction::Run(const ReducerOptions& options, const VoxelVolume* piece,
+  const std::string& failure, Progress* pilotProgress, Progress* progress, PieceFigures& figures) const
+{
+  std::string failed = piece ? failure : (failure.empty() ? "the piece could not be read" : failure);
+  const long long voxels = piece && failed.empty() ? piece->NumberOfVoxels() : 0;
+  const bool holdsVoxels = voxels > 0;
+
+  // 1. Every piece is ready; the whole volume's voxels and range.
+  std::vector<double> sums = { failed.empty() ? 0.0 : 1.0, double(voxels) };
+  std::vector<double> ends = { holdsVoxels ? piece->Range[1] : -HUGE_VAL, holdsVoxels ? -piece->Range[0] : -HUGE_VAL };
+  this->Sum(sums);
+  this->Maximum(ends);
+  ThrowIfAnyFailed(sums[0], failed);
+  const double allVoxels = sums[1];
+  figures.Range[0] = -ends[1];
+  figures.Range[1] = ends[0];
+  ReducerOptions opt = options;
+  if (opt.TargetError >= 0 && opt.ErrorRelative)
+  {
+    opt.TargetError *= figures.Range[1] - figures.Range[0];
+    opt.ErrorRelative = false;
+  }
+
+  // 2. A tet budget is shared out by each piece's error at a pilot budget.
+  figures.Share = allVoxels > 0 ? double(voxels) / allVoxels : 0.0;
+  if (options.TargetTets > 0)
+  {
+    double error = 0;
+    Attempt(failed, [&] {
+      if (!holdsVoxels)
+      {
+        return;
+      }
+      ReducerOptions pilot = opt;
+      pilot.TargetTets = std::max(SmallestBudget, std::llround(PilotFraction * double(options.TargetTets) * figures.Share));
+      pilot.TargetError = -1;
+      pilot.Levels.clear();
+      pilot.RelocateVertices = false; // 4-5 x the time (TetReducer.h) for a ranking of pieces
+      const std::vector<ReducedMesh> m = TetReducer(pilot).Run(*piece, pilotProgress);
+      error = SquaredError(m.back(), voxels);
+      figures.PilotSeconds = m.back().BuildSeconds;
+    });
+    sums = { failed.empty() ? 0.0 : 1.0, error };
+    this->Sum(sums);
+    ThrowIfAnyFailed(sums[0], failed);
+    if (sums[1] > 0)
+    {
+      figures.Share = error / sums[1];
+    }
+    auto share = [&](long long budget) { return std::max(SmallestBudget, std::llround(double(budget) * figures.Share)); };
+    opt.TargetTets = share(options.TargetTets);
+    opt.Levels.clear();
+    for (long long level : options.Levels)
+    {
+      const long long l = share(level);
+      if (l < opt.TargetTets && std::find(opt.Levels.begin(), opt.Levels.end(), l) == opt.Levels.end())
+      {
+        opt.Levels.push_back(l);
+      }
+    }
+  }
+  figures.TargetTets = opt.TargetTets;
+
+  // 3. This piece's reduction; the whole volume's errors from every piece's.
+  std::vector<ReducedMesh> meshes;
+  Attempt(failed, [&] {
+    if (holdsVoxels)
+    {
+      meshes = TetReducer(opt).Run(*piece, progress);
+    }
+  });
+  const ReducedMesh* last = meshes.empty() ? nullptr : &meshes.back();
+  sums = { failed.empty() ? 0.0 : 1.0, last ? last->Rms * last->Rms * double(voxels) : 0.0,
+    last ? last->WeightedRms * last->WeightedRms * double(voxels) : 0.0, last ? double(last->NumberOfTets()) : 0.0 };
+  ends = { last ? last->Max : 0.0, last ? last->WeightedMax : 0.0 };
+  this->Sum(sums);
+  this->Maximum(ends);
+  ThrowIfAnyFailed(sums[0], failed);
+  figures.Rms = allVoxels > 0 ? std::sqrt(sums[1] / allVoxels) : 0.0;
+  figures.WeightedRms = allVoxels > 0 ? std::sqrt(sums[2] / allVoxels) : 0.0;
+  figures.Tets = std::llround(sums[3]);
+  figures.Max = ends[0];
+  figures.WeightedMax = ends[1];
+  return meshes;
+}
+} // namespace art

@@ -1,0 +1,67 @@
+// PieceReduction: one reduction of a volume split into pieces, one piece per process (pvbatch
+// under MPI): each process reduces only the voxels of its piece, and the tet budget is shared
+// out by each piece's error, as a reduction of the whole volume sends its tets where the error
+// is. A pilot run at an eighth of a voxel-proportional budget measures each piece's (weighted)
+// squared error; an MPI sum (vtkMultiProcessController::AllReduce) gives every piece its share
+// of the budget and of each level. An error bound needs no sharing: pieces that each meet an RMS
+// or maximum bound meet it together (a relative bound is taken of the whole volume's range).
+// Neighbouring pieces share one layer of voxels, so their meshes meet without a gap; they need
+// not match there. Every process takes part in every exchange, a failed one too, so that one
+// piece's error fails all of them instead of leaving the others waiting.
+#ifndef art_PieceReduction_h
+#define art_PieceReduction_h
+
+#include "AdaptiveRTReductionModule.h"
+#include "TetReducer.h"
+#include "VoxelVolume.h"
+
+#include <string>
+#include <vector>
+
+class vtkMultiProcessController;
+
+namespace art
+{
+class Progress;
+
+/// The figures of the whole volume after a piece reduction (every process gets the same).
+struct PieceFigures
+{
+  double Rms = 0, Max = 0, WeightedRms = 0, WeightedMax = 0; ///< over every piece's voxels
+  double Range[2] = { 0, 0 }; ///< the whole volume's scalar range
+  long long Tets = 0;         ///< of every piece's final mesh
+  long long TargetTets = 0;   ///< this piece's share of the budget (0: none)
+  double Share = 1;           ///< this piece's fraction of the budget
+  double PilotSeconds = 0;    ///< this process's pilot run
+};
+
+/// The extent of `piece` of `pieces` in `whole` (VTK's block split, by cells, so that neighbours
+/// share a layer of points). Empty (min > max on an axis) when there are more pieces than cells.
+ADAPTIVERTREDUCTION_EXPORT void PieceExtent(const int whole[6], int piece, int pieces, int extent[6]);
+
+/// Does `controller` run one process per piece, this process being `piece` of `pieces`?
+ADAPTIVERTREDUCTION_EXPORT bool OnePiecePerProcess(vtkMultiProcessController* controller, int piece, int pieces);
+
+class ADAPTIVERTREDUCTION_EXPORT PieceReduction
+{
+public:
+  explicit PieceReduction(vtkMultiProcessController* controller) : Controller(controller) {}
+
+  /// Collective: every process calls it. `piece` is this process's voxels (none: a piece thinner
+  /// than two voxels along an axis, which adds nothing), or null with `failure` saying why this
+  /// process cannot reduce. Returns this piece's meshes (as TetReducer::Run; empty for an empty
+  /// piece) and fills `figures`. Throws art::Error when any process failed: this one's own
+  /// message, or that another piece failed.
+  std::vector<ReducedMesh> Run(const ReducerOptions& options, const VoxelVolume* piece, const std::string& failure,
+    Progress* pilotProgress, Progress* progress, PieceFigures& figures) const;
+
+private:
+  /// Sums `values` over the processes; values[0] counts the failed ones.
+  void Sum(std::vector<double>& values) const;
+  void Maximum(std::vector<double>& values) const;
+
+  vtkMultiProcessController* Controller;
+};
+} // namespace art
+
+#endif
