@@ -4,6 +4,8 @@
 
 #include <vtkCommunicator.h>
 #include <vtkExtentTranslator.h>
+#include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 
@@ -64,6 +66,125 @@ void PieceExtent(const int whole[6], int piece, int pieces, int extent[6])
   vtkNew<vtkExtentTranslator> split;
   split->PieceToExtentThreadSafe(piece, pieces, 0, w, e, vtkExtentTranslator::BLOCK_MODE, 0);
   std::copy(e, e + 6, extent);
+}
+
+bool HoldsVoxels(const int whole[6], const int extent[6])
+{
+  bool holds = true;
+  for (int a = 0; a < 3; ++a)
+  {
+    holds = holds && extent[2 * a] <= extent[2 * a + 1] &&
+      (extent[2 * a] < extent[2 * a + 1] || whole[2 * a] == whole[2 * a + 1]);
+  }
+  return holds;
+}
+
+namespace
+{
+bool Contains(const int outer[6], const int inner[6])
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (outer[2 * a] > inner[2 * a] || outer[2 * a + 1] < inner[2 * a + 1])
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string ExtentText(const int* e)
+{
+  std::string t;
+  for (int i = 0; i < 6; ++i)
+  {
+    t += (i ? " " : "") + std::to_string(e[i]);
+  }
+  return t;
+}
+
+// A shallow copy of `image` cropped to `extent` (Crop replaces the copy's arrays only).
+vtkSmartPointer<vtkImageData> Cropped(vtkImageData* image, const int extent[6])
+{
+  auto part = vtkSmartPointer<vtkImageData>::New();
+  part->ShallowCopy(image);
+  int have[6];
+  image->GetExtent(have);
+  if (!std::equal(have, have + 6, extent))
+  {
+    part->Crop(extent);
+  }
+  return part;
+}
+
+constexpr int PartTag = 736301;
+} // namespace
+
+vtkSmartPointer<vtkImageData> OwnPart(vtkMultiProcessController* controller, vtkImageData* input, const int whole[6],
+  int piece, int pieces, int given[6], std::string& failure)
+{
+  int ext[6];
+  PieceExtent(whole, piece, pieces, ext);
+  const int none[6] = { 0, -1, 0, -1, 0, -1 };
+  std::copy(none, none + 6, given);
+  if (input)
+  {
+    input->GetExtent(given);
+  }
+  const bool needs = HoldsVoxels(whole, ext);
+  int mine = !needs || (input && Contains(given, ext)) ? 1 : 0;
+  std::vector<int> all(static_cast<size_t>(pieces), 0);
+  controller->AllGather(&mine, all.data(), 1);
+  if (std::find(all.begin(), all.end(), 0) == all.end())
+  {
+    return needs ? Cropped(input, ext) : vtkSmartPointer<vtkImageData>::New();
+  }
+  // Process 0 hands out the parts of those that lack theirs, with their placement (the transfer
+  // keeps the arrays; extent, origin, spacing and direction go beside them).
+  int canServe = piece == 0 && input && Contains(given, whole) ? 1 : 0;
+  controller->Broadcast(&canServe, 1, 0);
+  if (!canServe)
+  {
+    failure = "piece " + std::to_string(piece) + " of " + std::to_string(pieces) + ": the input holds the extent " +
+      ExtentText(given) + (mine ? "" : ", not all of " + ExtentText(ext)) +
+      ", and piece 0 does not hold the whole volume to hand out the parts";
+    return nullptr;
+  }
+  if (piece == 0)
+  {
+    for (int p = 1; p < pieces; ++p)
+    {
+      if (!all[static_cast<size_t>(p)])
+      {
+        int e[6];
+        PieceExtent(whole, p, pieces, e);
+        vtkSmartPointer<vtkImageData> part = Cropped(input, e);
+        double place[15];
+        part->GetOrigin(place);
+        part->GetSpacing(place + 3);
+        std::copy(part->GetDirectionMatrix()->GetData(), part->GetDirectionMatrix()->GetData() + 9, place + 6);
+        controller->Send(e, 6, p, PartTag);
+        controller->Send(place, 15, p, PartTag);
+        controller->Send(part, p, PartTag);
+      }
+    }
+    return Cropped(input, ext);
+  }
+  if (mine)
+  {
+    return needs ? Cropped(input, ext) : vtkSmartPointer<vtkImageData>::New();
+  }
+  int e[6];
+  double place[15];
+  auto part = vtkSmartPointer<vtkImageData>::New();
+  controller->Receive(e, 6, 0, PartTag);
+  controller->Receive(place, 15, 0, PartTag);
+  controller->Receive(part, 0, PartTag);
+  part->SetExtent(e);
+  part->SetOrigin(place);
+  part->SetSpacing(place + 3);
+  part->SetDirectionMatrix(place + 6);
+  return part;
 }
 
 bool OnePiecePerProcess(vtkMultiProcessController* controller, int piece, int pieces)

@@ -7,7 +7,8 @@
 // or maximum bound meet it together (a relative bound is taken of the whole volume's range).
 // Neighbouring pieces share one layer of voxels, so their meshes meet without a gap; they need
 // not match there. Every process takes part in every exchange, a failed one too, so that one
-// piece's error fails all of them instead of leaving the others waiting.
+// piece's error fails all of them instead of leaving the others waiting. A source that cannot
+// read a part is read whole by process 0, which sends each other process its part.
 #ifndef art_PieceReduction_h
 #define art_PieceReduction_h
 
@@ -15,9 +16,12 @@
 #include "TetReducer.h"
 #include "VoxelVolume.h"
 
+#include <vtkSmartPointer.h>
+
 #include <string>
 #include <vector>
 
+class vtkImageData;
 class vtkMultiProcessController;
 
 namespace art
@@ -33,11 +37,25 @@ struct PieceFigures
   long long TargetTets = 0;   ///< this piece's share of the budget (0: none)
   double Share = 1;           ///< this piece's fraction of the budget
   double PilotSeconds = 0;    ///< this process's pilot run
+  int Extent[6] = { 0, -1, 0, -1, 0, -1 };      ///< the extent this piece reduced (the caller's)
+  int InputExtent[6] = { 0, -1, 0, -1, 0, -1 }; ///< the extent its input held (the caller's)
 };
 
 /// The extent of `piece` of `pieces` in `whole` (VTK's block split, by cells, so that neighbours
 /// share a layer of points). Empty (min > max on an axis) when there are more pieces than cells.
 ADAPTIVERTREDUCTION_EXPORT void PieceExtent(const int whole[6], int piece, int pieces, int extent[6]);
+
+/// Does the piece `extent` of `whole` hold voxels to reduce (two or more along every axis the
+/// whole has two or more)? Thinner pieces (more pieces than cells) add nothing.
+ADAPTIVERTREDUCTION_EXPORT bool HoldsVoxels(const int whole[6], const int extent[6]);
+
+/// Collective: this process's part of the image (PieceExtent of `whole`), cropped from `input`
+/// when that holds it; else sent by process 0, which holds the whole image (a source that cannot
+/// read a part gives piece 0 all of it and the others nothing). Null on every process, with
+/// `failure`, when a process lacks its part and process 0 cannot hand it out. `given` is the
+/// extent `input` held.
+ADAPTIVERTREDUCTION_EXPORT vtkSmartPointer<vtkImageData> OwnPart(vtkMultiProcessController* controller,
+  vtkImageData* input, const int whole[6], int piece, int pieces, int given[6], std::string& failure);
 
 /// Does `controller` run one process per piece, this process being `piece` of `pieces`?
 ADAPTIVERTREDUCTION_EXPORT bool OnePiecePerProcess(vtkMultiProcessController* controller, int piece, int pieces);

@@ -21,6 +21,7 @@
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkIntArray.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
@@ -74,51 +75,25 @@ Piece RequestedPiece(vtkInformation* request, vtkInformationVector* outputVector
   return p;
 }
 
-// This process's part of `image` (the extent PieceExtent gives it), reduced with every other
-// process's part (art::PieceReduction). A part thinner than two voxels along an axis holds none.
-std::vector<art::ReducedMesh> ReduceOwnPiece(vtkImageData* image, const int whole[6], const Piece& piece,
+// This process's part (`image`, already cropped by art::OwnPart), reduced with every other
+// process's part (art::PieceReduction). A part thinner than two voxels along an axis holds none;
+// a null image (its arrays could not be chosen) is `failure`.
+std::vector<art::ReducedMesh> ReduceOwnPiece(vtkImageData* image, std::string failure, bool holdsVoxels,
   vtkMultiProcessController* controller, const art::ReducerOptions& opt, art::Progress* pilot, art::Progress* progress,
   art::PieceFigures& figures, art::VoxelVolume& volume)
 {
-  int ext[6], have[6];
-  art::PieceExtent(whole, piece.Index, piece.Count, ext);
-  image->GetExtent(have);
-  std::string failure;
-  bool holds = true;
-  for (int a = 0; a < 3; ++a)
-  {
-    holds = holds && ext[2 * a] <= ext[2 * a + 1] && (ext[2 * a] < ext[2 * a + 1] || whole[2 * a] == whole[2 * a + 1]);
-  }
   try
   {
+    if (!image)
+    {
+      throw art::Error(failure);
+    }
     vtkDataArray* s = image->GetPointData()->GetScalars();
     volume.Name = s && s->GetName() ? s->GetName() : "scalars";
     volume.DoubleValues = s && art::ReducedAsDouble(s->GetDataType());
-    if (holds)
+    if (holdsVoxels)
     {
-      for (int a = 0; a < 3; ++a)
-      {
-        if (have[2 * a] > ext[2 * a] || have[2 * a + 1] < ext[2 * a + 1])
-        {
-          auto text = [](const int* e) {
-            std::string t;
-            for (int i = 0; i < 6; ++i)
-            {
-              t += (i ? " " : "") + std::to_string(e[i]);
-            }
-            return t;
-          };
-          throw art::Error("piece " + std::to_string(piece.Index) + " of " + std::to_string(piece.Count) +
-            ": the input holds the extent " + text(have) + ", not all of " + text(ext));
-        }
-      }
-      vtkNew<vtkImageData> part;
-      part->ShallowCopy(image);
-      if (!std::equal(ext, ext + 6, have))
-      {
-        part->Crop(ext); // a reader that gave more than it was asked
-      }
-      volume = art::VolumeFromImage(part);
+      volume = art::VolumeFromImage(image);
     }
   }
   catch (const std::exception& e)
@@ -151,6 +126,18 @@ void AddPieceFields(vtkDataObject* out, int pieces, const art::PieceFigures& f)
   field("pieces", pieces);
   field("total_tets", static_cast<double>(f.Tets));
   field("piece_target_tets", static_cast<double>(f.TargetTets));
+  for (const auto& [name, e] : { std::make_pair("piece_extent", f.Extent), std::make_pair("input_extent", f.InputExtent) })
+  {
+    vtkNew<vtkIntArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(6);
+    a->SetNumberOfTuples(1);
+    for (int k = 0; k < 6; ++k)
+    {
+      a->SetComponent(0, k, e[k]);
+    }
+    out->GetFieldData()->AddArray(a);
+  }
 }
 } // namespace
 
@@ -220,19 +207,15 @@ int vtkAdaptiveTetReducer::RequestUpdateExtent(
   if (art::OnePiecePerProcess(this->Controller, piece.Index, piece.Count) &&
     in->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
   {
-    // One piece per process: this process's part of the extent only, from a source that can read
-    // a part (VTK's XML readers, .vti and .pvti). The others (vtkMetaImageReader: asked for a part
-    // of a compressed .mha it wrote the whole volume past its buffer) read it all; RequestData
-    // then takes the part.
-    int ext[6];
-    const int* whole = in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
-    art::PieceExtent(whole, piece.Index, piece.Count, ext);
-    const bool part = in->Has(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT()) && in->Get(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT());
-    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), part ? ext : whole, 6);
-    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), part ? piece.Index : 0);
-    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), part ? piece.Count : 1);
+    // One piece per process: asked as VTK's image pipelines ask, the whole extent as piece p of n.
+    // A source that can read a part (VTK's XML readers, .vti and .pvti; image sources) then reads
+    // this process's block of the extent, art::PieceExtent's; one that cannot gives piece 0 all of
+    // it and the others nothing (asked for a part directly, vtkMetaImageReader wrote a compressed
+    // .mha's whole volume past its buffer), and RequestData has piece 0 hand out the parts.
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), piece.Index);
+    in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), piece.Count);
     in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-    in->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
     return 1;
   }
   // Otherwise the fit needs every voxel: ask for the whole extent, as one piece. The piece request
@@ -269,6 +252,24 @@ int vtkAdaptiveTetReducer::RequestData(
   {
     vtkErrorMacro("Set TargetTets or TargetError.");
     return 0;
+  }
+  // This process's part of the volume (read as a part, or handed out by piece 0).
+  art::PieceFigures whole;
+  bool holdsVoxels = true;
+  vtkSmartPointer<vtkImageData> own;
+  if (distributed)
+  {
+    const int* wholeExtent = inputVector[0]->GetInformationObject(0)->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+    std::string failure;
+    own = art::OwnPart(this->Controller, input, wholeExtent, piece.Index, piece.Count, whole.InputExtent, failure);
+    if (!own)
+    {
+      vtkErrorMacro(<< failure); // on every process alike
+      return 0;
+    }
+    art::PieceExtent(wholeExtent, piece.Index, piece.Count, whole.Extent);
+    holdsVoxels = art::HoldsVoxels(wholeExtent, whole.Extent);
+    input = own;
   }
   art::ReducerOptions opt;
   opt.TargetTets = this->TargetTets;
@@ -334,84 +335,16 @@ int vtkAdaptiveTetReducer::RequestData(
   });
   try
   {
-    // The array chosen with SetInputArrayToProcess (default: the point scalars).
-    vtkNew<vtkImageData> selected;
-    vtkImageData* image = input;
-    vtkDataArray* chosen = this->GetInputArrayToProcess(0, inputVector);
-    vtkInformation* asked = this->GetInputArrayInformation(0);
-    const bool askedCells = asked && asked->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
-      asked->Get(vtkDataObject::FIELD_ASSOCIATION()) == vtkDataObject::FIELD_ASSOCIATION_CELLS;
-    // An empty name (ParaView's Python before the input's arrays are known) asks for nothing.
-    if (!chosen && asked && asked->Has(vtkDataObject::FIELD_NAME()) && *asked->Get(vtkDataObject::FIELD_NAME()))
-    {
-      // A named array that is not there: say so (it used to reduce the active scalars instead),
-      // naming the association asked for (a missing cell array was 'no point array').
-      vtkDataSetAttributes* where = askedCells ? static_cast<vtkDataSetAttributes*>(input->GetCellData())
-                                               : static_cast<vtkDataSetAttributes*>(input->GetPointData());
-      const char* kind = askedCells ? "cell" : "point";
-      std::string names;
-      for (int i = 0; i < where->GetNumberOfArrays(); ++i)
-      {
-        const char* n = where->GetArrayName(i);
-        names += std::string(i ? ", " : "") + (n ? n : "(unnamed)");
-      }
-      vtkErrorMacro(<< "The input has no " << kind << " array '" << asked->Get(vtkDataObject::FIELD_NAME()) << "' ("
-                    << kind << " arrays: " << (names.empty() ? "none" : names) << ").");
-      return 0;
-    }
-    vtkCellData* cd = input->GetCellData();
     bool onCells = false;
-    for (int i = 0; chosen && i < cd->GetNumberOfArrays(); ++i)
+    std::string failure;
+    vtkSmartPointer<vtkImageData> image = this->SelectVoxels(input, onCells, failure);
+    if (!image && !distributed)
     {
-      onCells = onCells || cd->GetAbstractArray(i) == chosen;
-    }
-    if (!chosen && !askedCells)
-    {
-      // No active point scalars: the first one-component point array, as `reduce` takes it (the
-      // cell fallback below reduced a cell array such as cell ids before the point data).
-      chosen = art::ChooseArray(input->GetPointData(), "");
-    }
-    if (!chosen)
-    {
-      // Values on the cells only (labels, finite-volume output): they are the voxels.
-      chosen = art::ChooseArray(cd, "");
-      onCells = chosen != nullptr;
-    }
-    vtkSmartPointer<vtkImageData> voxels;
-    if (onCells)
-    {
-      // A cell array is one voxel per cell, at the cell's centre (it did not match the points:
-      // 'the scalar array does not match the image dimensions').
-      vtkNew<vtkCellData> one;
-      one->SetScalars(chosen);
-      voxels = art::CellVoxels(input, one);
-      image = voxels;
-    }
-    else if (chosen && chosen != input->GetPointData()->GetScalars())
-    {
-      selected->ShallowCopy(input);
-      selected->GetPointData()->SetScalars(chosen);
-      image = selected;
-    }
-    vtkNew<vtkImageData> reduced;
-    if (vtkDataArray* v = image->GetPointData()->GetScalars(); v && v->GetNumberOfComponents() > 1)
-    {
-      if (this->VectorMode == DISABLED)
-      {
-        vtkErrorMacro(<< "The array '" << (v->GetName() ? v->GetName() : "") << "' has " << v->GetNumberOfComponents()
-                      << " components; the reducer needs one (SetVectorMode(vtkAdaptiveTetReducer::MAGNITUDE), or "
-                         "COMPONENT with SetVectorComponent; or choose another with SetInputArrayToProcess).");
-        return 0;
-      }
-      // Its magnitude or one component, as the mappers draw a vector (VectorMode).
-      reduced->ShallowCopy(image);
-      reduced->GetPointData()->SetScalars(
-        art::TakeComponent(v, this->VectorMode == MAGNITUDE ? art::Magnitude : this->VectorComponent));
-      image = reduced;
+      vtkErrorMacro(<< failure);
+      return 0;
     }
     art::VoxelVolume volume;
     std::vector<art::ReducedMesh> meshes;
-    art::PieceFigures whole;
     if (distributed)
     {
       if (onCells)
@@ -419,11 +352,8 @@ int vtkAdaptiveTetReducer::RequestData(
         vtkWarningMacro("Cell values reduced in parallel: each piece's mesh spans its own cells' centres, a cell's "
                         "width short of the next piece's.");
       }
-      int ext[6];
-      image->GetExtent(ext);
-      vtkInformation* in = inputVector[0]->GetInformationObject(0);
-      const int* wholeExtent = onCells ? ext : in->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
-      meshes = ReduceOwnPiece(image, wholeExtent, piece, this->Controller, opt, &pilot, &progress, whole, volume);
+      // Every process takes part, one without voxels to reduce too: the failure is said by all.
+      meshes = ReduceOwnPiece(image, failure, holdsVoxels, this->Controller, opt, &pilot, &progress, whole, volume);
     }
     else
     {
@@ -515,6 +445,83 @@ int vtkAdaptiveTetReducer::RequestData(
     return 0;
   }
   return 1;
+}
+
+vtkSmartPointer<vtkImageData> vtkAdaptiveTetReducer::SelectVoxels(vtkImageData* input, bool& onCells, std::string& error)
+{
+  // The array chosen with SetInputArrayToProcess (default: the point scalars).
+  vtkSmartPointer<vtkImageData> image = input;
+  vtkDataArray* chosen = this->GetInputArrayToProcess(0, input);
+  vtkInformation* asked = this->GetInputArrayInformation(0);
+  const bool askedCells = asked && asked->Has(vtkDataObject::FIELD_ASSOCIATION()) &&
+    asked->Get(vtkDataObject::FIELD_ASSOCIATION()) == vtkDataObject::FIELD_ASSOCIATION_CELLS;
+  // An empty name (ParaView's Python before the input's arrays are known) asks for nothing.
+  if (!chosen && asked && asked->Has(vtkDataObject::FIELD_NAME()) && *asked->Get(vtkDataObject::FIELD_NAME()))
+  {
+    // A named array that is not there: say so (it used to reduce the active scalars instead),
+    // naming the association asked for (a missing cell array was 'no point array').
+    vtkDataSetAttributes* where = askedCells ? static_cast<vtkDataSetAttributes*>(input->GetCellData())
+                                             : static_cast<vtkDataSetAttributes*>(input->GetPointData());
+    const char* kind = askedCells ? "cell" : "point";
+    std::string names;
+    for (int i = 0; i < where->GetNumberOfArrays(); ++i)
+    {
+      const char* n = where->GetArrayName(i);
+      names += std::string(i ? ", " : "") + (n ? n : "(unnamed)");
+    }
+    error = std::string("The input has no ") + kind + " array '" + asked->Get(vtkDataObject::FIELD_NAME()) + "' (" +
+      kind + " arrays: " + (names.empty() ? "none" : names) + ").";
+    return nullptr;
+  }
+  vtkCellData* cd = input->GetCellData();
+  onCells = false;
+  for (int i = 0; chosen && i < cd->GetNumberOfArrays(); ++i)
+  {
+    onCells = onCells || cd->GetAbstractArray(i) == chosen;
+  }
+  if (!chosen && !askedCells)
+  {
+    // No active point scalars: the first one-component point array, as `reduce` takes it (the
+    // cell fallback below reduced a cell array such as cell ids before the point data).
+    chosen = art::ChooseArray(input->GetPointData(), "");
+  }
+  if (!chosen)
+  {
+    // Values on the cells only (labels, finite-volume output): they are the voxels.
+    chosen = art::ChooseArray(cd, "");
+    onCells = chosen != nullptr;
+  }
+  if (onCells)
+  {
+    // A cell array is one voxel per cell, at the cell's centre (it did not match the points:
+    // 'the scalar array does not match the image dimensions').
+    vtkNew<vtkCellData> one;
+    one->SetScalars(chosen);
+    image = art::CellVoxels(input, one);
+  }
+  else if (chosen && chosen != input->GetPointData()->GetScalars())
+  {
+    image = vtkSmartPointer<vtkImageData>::New();
+    image->ShallowCopy(input);
+    image->GetPointData()->SetScalars(chosen);
+  }
+  if (vtkDataArray* v = image->GetPointData()->GetScalars(); v && v->GetNumberOfComponents() > 1)
+  {
+    if (this->VectorMode == DISABLED)
+    {
+      error = std::string("The array '") + (v->GetName() ? v->GetName() : "") + "' has " +
+        std::to_string(v->GetNumberOfComponents()) +
+        " components; the reducer needs one (SetVectorMode(vtkAdaptiveTetReducer::MAGNITUDE), or COMPONENT with "
+        "SetVectorComponent; or choose another with SetInputArrayToProcess).";
+      return nullptr;
+    }
+    // Its magnitude or one component, as the mappers draw a vector (VectorMode).
+    auto reduced = vtkSmartPointer<vtkImageData>::New();
+    reduced->ShallowCopy(image);
+    reduced->GetPointData()->SetScalars(
+      art::TakeComponent(v, this->VectorMode == MAGNITUDE ? art::Magnitude : this->VectorComponent));
+    image = reduced;
+  }  return image;
 }
 
 void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)

@@ -27,7 +27,8 @@
  * extent (VTK's block split; neighbours share a layer of voxels, so their meshes meet without a
  * gap, though not vertex to vertex), and the tet budget and levels are shared out by each part's
  * error (art::PieceReduction): no process holds the whole volume. The field data's errors, range
- * and total_tets are then the whole volume's; tets, vertices and piece_target_tets this piece's.
+ * and total_tets are then the whole volume's; tets, vertices, piece_target_tets, piece_extent
+ * (reduced) and input_extent (given) this piece's.
  * Serial (piece 0 of 1), or pieces without such a controller (a writer streaming pieces in one
  * process): the whole extent is read as one piece, piece 0 holds the mesh, the others are empty.
  */
@@ -35,8 +36,10 @@
 #define vtkAdaptiveTetReducer_h
 
 #include "AdaptiveRTReductionModule.h"
+#include "vtkSmartPointer.h" // SelectVoxels
 #include "vtkUnstructuredGridAlgorithm.h"
 
+#include <string> // SelectVoxels
 #include <vector>
 
 class vtkImageData;
@@ -324,6 +327,13 @@ protected:
 #endif
 
 private:
+  /**
+   * The image whose point scalars are the one-component voxels to reduce (the array chosen, cell
+   * values as voxels at the cells' centres, a vector's magnitude or component); null, with
+   * `error` saying why, when there is none.
+   */
+  vtkSmartPointer<vtkImageData> SelectVoxels(vtkImageData* input, bool& onCells, std::string& error);
+
   vtkAdaptiveTetReducer(const vtkAdaptiveTetReducer&) = delete;
   void operator=(const vtkAdaptiveTetReducer&) = delete;
 };
