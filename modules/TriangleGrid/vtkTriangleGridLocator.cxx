@@ -417,6 +417,22 @@ void vtkTriangleGridLocator::FindCellsWithinBounds(double* bbox, vtkIdList* cell
 vtkIdType vtkTriangleGridLocator::FindCell(
   double x[3], double tol2, vtkGenericCell* cell, double pcoords[3], double* weights)
 {
+  int subId;
+  return this->FindCellAt(x, tol2, cell, subId, pcoords, weights);
+}
+
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+vtkIdType vtkTriangleGridLocator::FindCell(
+  double x[3], double tol2, vtkGenericCell* cell, int& subId, double pcoords[3], double* weights)
+{
+  return this->FindCellAt(x, tol2, cell, subId, pcoords, weights);
+}
+#endif
+
+vtkIdType vtkTriangleGridLocator::FindCellAt(
+  double x[3], double tol2, vtkGenericCell* cell, int& subId, double pcoords[3], double* weights)
+{
+  subId = 0;
   double cp[3], d2;
   vtkIdType cellId;
   bool inside;
@@ -437,7 +453,6 @@ vtkIdType vtkTriangleGridLocator::FindCell(
   vtkGenericCell* gc = cell ? cell : own.GetPointer();
   this->DataSet->GetCell(cellId, gc);
   std::vector<double> w(static_cast<size_t>(gc->GetNumberOfPoints()) + 1);
-  int subId;
   double pc[3];
   gc->EvaluatePosition(x, cp, subId, pc, d2, w.data());
   if (pcoords)

@@ -45,6 +45,7 @@
 
 #include "AdaptiveRTTriangleGridModule.h"
 #include "vtkAbstractCellLocator.h"
+#include "vtkVersionMacros.h" // the FindCell VTK 9.2 adds
 
 #include <memory> // for std::unique_ptr
 #include <vector> // for std::vector
@@ -124,6 +125,11 @@ public:
   void FindCellsWithinBounds(double* bbox, vtkIdList* cells) override;
   vtkIdType FindCell(
     double x[3], double tol2, vtkGenericCell* cell, double pcoords[3], double* weights) override;
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 2, 0)
+  /** The same with the cell's sub-id at x: VTK 9.2's probe filters (ParaView 5.11's) call this one. */
+  vtkIdType FindCell(double x[3], double tol2, vtkGenericCell* cell, int& subId, double pcoords[3],
+    double* weights) override;
+#endif
 
   /** Triangles in the search structure (after triangulation, zero-area ones dropped). */
   vtkIdType GetNumberOfTriangles();
@@ -140,6 +146,8 @@ protected:
   // Fills `cell` (when given) with cell cellId; for a cell that is not a triangle, subId and inside
   // come from the cell's own EvaluatePosition at x (a strip's triangle, a polygon's interior).
   void Finish(const double x[3], vtkIdType cellId, vtkGenericCell* cell, int& subId, bool& inside);
+  // Both FindCell signatures: the cell nearest x within sqrt(tol2), with its own coordinates at x.
+  vtkIdType FindCellAt(double x[3], double tol2, vtkGenericCell* cell, int& subId, double pcoords[3], double* weights);
 
   int AcceleratorType = RECURSIVE_GRID;
   int VoxelThreshold = 0;
