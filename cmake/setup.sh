@@ -6,6 +6,8 @@
 #   cmake/setup.sh test     ... then run every test through ctest (under Xvfb when no display)
 #   cmake/setup.sh fuzz [S] ... then build the loaders' fuzzing targets with clang (tests/fuzz) and
 #                           run each for S seconds (default 120); not part of CI
+#   cmake/setup.sh paraview ... then build the ParaView plugin in build/paraview and run its tests
+#                           (paraview/setup.sh; writes build/paraview/env.sh)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -54,6 +56,8 @@ case "${1:-}" in
     run=()
     if [ -z "${DISPLAY:-}" ]; then run=(xvfb-run -a -s "-screen 0 1280x1024x24"); fi
     "${run[@]}" ctest --preset release ;;
+  paraview)
+    bash paraview/setup.sh ;;
   *)
-    echo "setup: unknown action '$1' (use demo, test or fuzz)" >&2; exit 2 ;;
+    echo "setup: unknown action '$1' (use demo, test, fuzz or paraview)" >&2; exit 2 ;;
 esac
