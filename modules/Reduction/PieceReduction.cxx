@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <numeric>
 
 namespace art
 {
@@ -21,6 +22,8 @@ namespace
 // pieces well (tests/benchmarks/paraview-results/README.md) at a fraction of the final run's time.
 constexpr double PilotFraction = 1.0 / 8.0;
 constexpr long long SmallestBudget = 48;
+// With an error bound alone, the pilot's budget: a tet per this many voxels.
+constexpr long long PilotVoxelsPerTet = 128;
 
 double SquaredError(const ReducedMesh& m, long long voxels)
 {
@@ -48,6 +51,53 @@ void Attempt(std::string& failure, F&& step)
       failure = "the reduction failed";
     }
   }
+}
+
+// Each piece's RMS bound for a bound `rms` over all voxels: the squared-error budget rms^2 N shared
+// in proportion to the pieces' pilot errors, except that no piece is held below rms / 4 (a piece
+// of near-constant voxels would otherwise be refined, for nothing, almost to full resolution);
+// such pieces get that floor and the others share what is left. Every process computes the same.
+std::vector<double> RmsBounds(double rms, const std::vector<double>& errors, const std::vector<double>& voxels)
+{
+  const double floor2 = rms * rms / 16.0;
+  std::vector<double> bound2(errors.size(), -1.0);
+  for (bool fixedOne = true; fixedOne;)
+  {
+    fixedOne = false;
+    double budget = rms * rms * std::accumulate(voxels.begin(), voxels.end(), 0.0), shared = 0;
+    for (size_t p = 0; p < errors.size(); ++p)
+    {
+      if (bound2[p] >= 0)
+      {
+        budget -= bound2[p] * voxels[p];
+      }
+      else
+      {
+        shared += errors[p];
+      }
+    }
+    for (size_t p = 0; p < errors.size(); ++p)
+    {
+      if (bound2[p] < 0 && voxels[p] > 0 && shared > 0 && budget * errors[p] / (shared * voxels[p]) < floor2)
+      {
+        bound2[p] = floor2;
+        fixedOne = true;
+      }
+    }
+    if (!fixedOne)
+    {
+      for (size_t p = 0; p < errors.size(); ++p)
+      {
+        if (bound2[p] < 0)
+        {
+          bound2[p] = voxels[p] > 0 && shared > 0 ? std::max(0.0, budget) * errors[p] / (shared * voxels[p]) : rms * rms;
+        }
+      }
+    }
+  }
+  std::vector<double> bounds(errors.size());
+  std::transform(bound2.begin(), bound2.end(), bounds.begin(), [](double b2) { return std::sqrt(b2); });
+  return bounds;
 }
 
 void ThrowIfAnyFailed(double failed, const std::string& failure)
@@ -229,10 +279,15 @@ std::vector<ReducedMesh> PieceReduction::Run(const ReducerOptions& options, cons
     opt.TargetError *= figures.Range[1] - figures.Range[0];
     opt.ErrorRelative = false;
   }
+  figures.Budget = options.TargetTets;
+  figures.Bound = opt.TargetError;
 
-  // 2. A tet budget is shared out by each piece's error at a pilot budget.
+  // 2. The budgets are shared out by each piece's squared error at a pilot run: the tets, and an
+  //    RMS bound's squared error over all voxels.
   figures.Share = allVoxels > 0 ? double(voxels) / allVoxels : 0.0;
-  if (options.TargetTets > 0)
+  const bool shareTets = options.TargetTets > 0;
+  const bool shareError = opt.TargetError >= 0 && opt.ErrorMetric == ReducerOptions::Metric::RMS;
+  if (shareTets || shareError)
   {
     double error = 0;
     Attempt(failed, [&] {
@@ -241,7 +296,8 @@ std::vector<ReducedMesh> PieceReduction::Run(const ReducerOptions& options, cons
         return;
       }
       ReducerOptions pilot = opt;
-      pilot.TargetTets = std::max(SmallestBudget, std::llround(PilotFraction * double(options.TargetTets) * figures.Share));
+      pilot.TargetTets = std::max(SmallestBudget,
+        shareTets ? std::llround(PilotFraction * double(options.TargetTets) * figures.Share) : voxels / PilotVoxelsPerTet);
       pilot.TargetError = -1;
       pilot.Levels.clear();
       pilot.RelocateVertices = false; // 4-5 x the time (TetReducer.h) for a ranking of pieces
@@ -249,25 +305,41 @@ std::vector<ReducedMesh> PieceReduction::Run(const ReducerOptions& options, cons
       error = SquaredError(m.back(), voxels);
       figures.PilotSeconds = m.back().BuildSeconds;
     });
-    sums = { failed.empty() ? 0.0 : 1.0, error };
-    this->Sum(sums);
-    ThrowIfAnyFailed(sums[0], failed);
-    if (sums[1] > 0)
+    // Every piece's error and voxels, on every process (each adds its own at its index).
+    const int pieces = this->Controller->GetNumberOfProcesses(), me = this->Controller->GetLocalProcessId();
+    std::vector<double> all(1 + 2 * static_cast<size_t>(pieces), 0.0);
+    all[0] = failed.empty() ? 0.0 : 1.0;
+    all[1 + me] = error;
+    all[1 + pieces + me] = double(voxels);
+    this->Sum(all);
+    ThrowIfAnyFailed(all[0], failed);
+    const std::vector<double> errors(all.begin() + 1, all.begin() + 1 + pieces);
+    const std::vector<double> counts(all.begin() + 1 + pieces, all.end());
+    const double total = std::accumulate(errors.begin(), errors.end(), 0.0);
+    if (total > 0)
     {
-      figures.Share = error / sums[1];
+      figures.Share = error / total;
     }
-    auto share = [&](long long budget) { return std::max(SmallestBudget, std::llround(double(budget) * figures.Share)); };
-    opt.TargetTets = share(options.TargetTets);
-    opt.Levels.clear();
-    for (long long level : options.Levels)
+    if (shareTets)
     {
-      const long long l = share(level);
-      if (l < opt.TargetTets && std::find(opt.Levels.begin(), opt.Levels.end(), l) == opt.Levels.end())
+      auto share = [&](long long budget) { return std::max(SmallestBudget, std::llround(double(budget) * figures.Share)); };
+      opt.TargetTets = share(options.TargetTets);
+      opt.Levels.clear();
+      for (long long level : options.Levels)
       {
-        opt.Levels.push_back(l);
+        const long long l = share(level);
+        if (l < opt.TargetTets && std::find(opt.Levels.begin(), opt.Levels.end(), l) == opt.Levels.end())
+        {
+          opt.Levels.push_back(l);
+        }
       }
     }
+    if (shareError && total > 0)
+    {
+      opt.TargetError = RmsBounds(opt.TargetError, errors, counts)[static_cast<size_t>(me)];
+    }
   }
+  figures.TargetError = opt.TargetError;
   figures.TargetTets = opt.TargetTets;
 
   // 3. This piece's reduction; the whole volume's errors from every piece's.
@@ -280,7 +352,8 @@ std::vector<ReducedMesh> PieceReduction::Run(const ReducerOptions& options, cons
   });
   const ReducedMesh* last = meshes.empty() ? nullptr : &meshes.back();
   sums = { failed.empty() ? 0.0 : 1.0, last ? last->Rms * last->Rms * double(voxels) : 0.0,
-    last ? last->WeightedRms * last->WeightedRms * double(voxels) : 0.0, last ? double(last->NumberOfTets()) : 0.0 };
+    last ? last->WeightedRms * last->WeightedRms * double(voxels) : 0.0, last ? double(last->NumberOfTets()) : 0.0,
+    last && !last->TargetReached ? 1.0 : 0.0 };
   ends = { last ? last->Max : 0.0, last ? last->WeightedMax : 0.0 };
   this->Sum(sums);
   this->Maximum(ends);
@@ -288,6 +361,7 @@ std::vector<ReducedMesh> PieceReduction::Run(const ReducerOptions& options, cons
   figures.Rms = allVoxels > 0 ? std::sqrt(sums[1] / allVoxels) : 0.0;
   figures.WeightedRms = allVoxels > 0 ? std::sqrt(sums[2] / allVoxels) : 0.0;
   figures.Tets = std::llround(sums[3]);
+  figures.Reached = sums[4] == 0;
   figures.Max = ends[0];
   figures.WeightedMax = ends[1];
   return meshes;

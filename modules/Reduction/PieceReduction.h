@@ -1,10 +1,12 @@
 // PieceReduction: one reduction of a volume split into pieces, one piece per process (pvbatch
 // under MPI): each process reduces only the voxels of its piece, and the tet budget is shared
 // out by each piece's error, as a reduction of the whole volume sends its tets where the error
-// is. A pilot run at an eighth of a voxel-proportional budget measures each piece's (weighted)
-// squared error; an MPI sum (vtkMultiProcessController::AllReduce) gives every piece its share
-// of the budget and of each level. An error bound needs no sharing: pieces that each meet an RMS
-// or maximum bound meet it together (a relative bound is taken of the whole volume's range).
+// is. A pilot run (at an eighth of a voxel-proportional tet budget, or a tet per 128 voxels for an
+// error bound alone) measures each piece's (weighted) squared error; an MPI sum
+// (vtkMultiProcessController::AllReduce) gives every piece its share of the tets and levels, and
+// of an RMS bound's squared-error budget over all voxels (no piece below a quarter of the bound),
+// so the pieces' errors together meet it. A maximum bound is every piece's own; a relative bound
+// is taken of the whole volume's range.
 // Neighbouring pieces share one layer of voxels, so their meshes meet without a gap; they need
 // not match there. Every process takes part in every exchange, a failed one too, so that one
 // piece's error fails all of them instead of leaving the others waiting. A source that cannot
@@ -34,7 +36,11 @@ struct PieceFigures
   double Rms = 0, Max = 0, WeightedRms = 0, WeightedMax = 0; ///< over every piece's voxels
   double Range[2] = { 0, 0 }; ///< the whole volume's scalar range
   long long Tets = 0;         ///< of every piece's final mesh
+  long long Budget = 0;       ///< the whole tet budget (0: none)
+  double Bound = -1;          ///< the whole error bound, data units (< 0: none)
+  bool Reached = true;        ///< every piece met its bound
   long long TargetTets = 0;   ///< this piece's share of the budget (0: none)
+  double TargetError = -1;    ///< this piece's error bound, data units (< 0: none)
   double Share = 1;           ///< this piece's fraction of the budget
   double PilotSeconds = 0;    ///< this process's pilot run
   int Extent[6] = { 0, -1, 0, -1, 0, -1 };      ///< the extent this piece reduced (the caller's)

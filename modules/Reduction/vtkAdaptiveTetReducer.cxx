@@ -112,6 +112,9 @@ void SetWholeFigures(art::ReducedMesh& m, const art::PieceFigures& f)
   m.WeightedMax = f.WeightedMax;
   m.Range[0] = f.Range[0];
   m.Range[1] = f.Range[1];
+  m.TargetTets = f.Budget;
+  m.TargetError = f.Bound;
+  m.TargetReached = f.Reached;
 }
 
 void AddPieceFields(vtkDataObject* out, int pieces, const art::PieceFigures& f)
@@ -126,6 +129,7 @@ void AddPieceFields(vtkDataObject* out, int pieces, const art::PieceFigures& f)
   field("pieces", pieces);
   field("total_tets", static_cast<double>(f.Tets));
   field("piece_target_tets", static_cast<double>(f.TargetTets));
+  field("piece_target_error", f.TargetError);
   for (const auto& [name, e] : { std::make_pair("piece_extent", f.Extent), std::make_pair("input_extent", f.InputExtent) })
   {
     vtkNew<vtkIntArray> a;

@@ -13,6 +13,7 @@ from paraview.simple import (AdaptiveTetReducer, OpenDataFile, ProgrammableFilte
 import art_pv
 
 SIZE = (400, 400)
+ERROR_BOUND = 0.04
 # Run on every rank inside the pipeline: a programmable filter's script is executed by each.
 RECORD = r"""
 import json, os
@@ -24,7 +25,8 @@ status = dict(l.split(':', 1) for l in open('/proc/self/status') if ':' in l)
 rec = {'rank': rank, 'peak_kb': int(status['VmHWM'].split()[0]), 'rss_kb': int(status['VmRSS'].split()[0]),
        'cells': data.GetNumberOfCells(), 'bounds': list(data.GetBounds())}
 fd = data.GetFieldData()
-for name in ('piece_extent', 'input_extent', 'piece_target_tets', 'total_tets', 'rms_error', 'weighted_rms_error', 'pieces'):
+for name in ('piece_extent', 'input_extent', 'piece_target_tets', 'piece_target_error', 'total_tets', 'rms_error', 'weighted_rms_error', 'pieces',
+             'scalar_range_min', 'scalar_range_max', 'target_error'):
     a = fd.GetArray(name)
     if a:
         rec[name] = [a.GetComponent(0, k) for k in range(a.GetNumberOfComponents())]
@@ -58,6 +60,10 @@ def main():
         source.TransferFunctionWeighting = art_pv.opacity_function(array)
         record_ranks(source, outdir, "reduced-%d" % n)
         SaveData(os.path.join(outdir, "mesh-%d.pvtu" % n), proxy=source)
+        # An error bound needs no sharing: each part meets it (plain L2, a fraction of the range).
+        bound = AdaptiveTetReducer(Input=reader, TargetTets=0, MaxError=ERROR_BOUND, ErrorRelative=1)
+        bound.Scalars = ["POINTS", array]
+        record_ranks(bound, outdir, "bounded-%d" % n)
     else:
         source = OpenDataFile(path)
         array = source.PointData.keys()[0]

@@ -6,7 +6,8 @@ others their parts) and draw it with 'Tet Ray Cast Volume';
 one rank then draws the mesh the N ranks wrote, and one rank reduces the whole CT. Checks: the N
 ranks draw what one rank draws (PSNR >= MIN_PSNR dB); no rank reduced the whole extent, and from a
 .vti none was given it; the pieces' tets add up to the budget; the whole volume's weighted RMS is
-within RMS_SLACK of the one-rank reduction's. Prints the peak memory of each rank beside the one
+within RMS_SLACK of the one-rank reduction's; an error bound (a fraction of the whole volume's
+range) is met by the pieces together. Prints the peak memory of each rank beside the one
 rank's (above each process's baseline before reading)."""
 import glob
 import json
@@ -84,6 +85,14 @@ if abs(total - tets) > 0.01 * tets or pieces[0]["total_tets"][0] != total:
     fails.append("tets %d for a budget of %d" % (total, tets))
 if rms_n > (1 + RMS_SLACK) * rms_1:
     fails.append("weighted RMS %.2f against %.2f" % (rms_n, rms_1))
+bounded, bounded_1 = records("bounded-%d" % ranks), records("bounded-1")
+b = bounded[0]
+limit = 0.04 * (b["scalar_range_max"][0] - b["scalar_range_min"][0])
+print("error bound 4%% of the range (%.1f): the pieces reach RMS %.2f with %d tets (one rank %.2f with %d; piece bounds %s)"
+      % (limit, b["rms_error"][0], b["total_tets"][0], bounded_1[0]["rms_error"][0], bounded_1[0]["cells"],
+         " ".join("%.1f" % p["piece_target_error"][0] for p in bounded)))
+if not b["rms_error"][0] <= limit or b["target_error"][0] != limit and abs(b["target_error"][0] - limit) > 1e-6 * limit:
+    fails.append("error bound: RMS %.2f for %.2f (target_error %.2f)" % (b["rms_error"][0], limit, b["target_error"][0]))
 peak_n = max(p["peak_kb"] - b["peak_kb"] for p, b in zip(pieces, base_n))
 peak_1 = whole[0]["peak_kb"] - base_1[0]["peak_kb"]
 print("peak memory above baseline: largest of %d ranks %.0f MB, one rank %.0f MB (%.2f x)"
