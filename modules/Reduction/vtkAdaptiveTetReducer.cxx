@@ -130,6 +130,7 @@ void AddPieceFields(vtkDataObject* out, int pieces, const art::PieceFigures& f)
   field("total_tets", static_cast<double>(f.Tets));
   field("piece_target_tets", static_cast<double>(f.TargetTets));
   field("piece_target_error", f.TargetError);
+  field("piece_pilot_seconds", f.PilotSeconds);
   for (const auto& [name, e] : { std::make_pair("piece_extent", f.Extent), std::make_pair("input_extent", f.InputExtent) })
   {
     vtkNew<vtkIntArray> a;

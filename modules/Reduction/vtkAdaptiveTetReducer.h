@@ -27,8 +27,9 @@
  * extent (VTK's block split; neighbours share a layer of voxels, so their meshes meet without a
  * gap, though not vertex to vertex), and the tet budget and levels are shared out by each part's
  * error (art::PieceReduction): no process holds the whole volume. The field data's errors, range
- * and total_tets are then the whole volume's; tets, vertices, piece_target_tets, piece_extent
- * (reduced) and input_extent (given) this piece's.
+ * and total_tets are then the whole volume's; tets, vertices, piece_target_tets,
+ * piece_target_error, piece_pilot_seconds, piece_extent (reduced) and input_extent (given) this
+ * piece's.
  * Serial (piece 0 of 1), or pieces without such a controller (a writer streaming pieces in one
  * process): the whole extent is read as one piece, piece 0 holds the mesh, the others are empty.
  */
