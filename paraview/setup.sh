@@ -36,7 +36,12 @@ if [ "$(cat "$prefix/.version" 2>/dev/null)" != "$version" ]; then
   echo "setup: making ParaView's private prefix in $prefix" >&2
   rm -rf "$prefix"
   mkdir -p "$prefix/deb"
-  (cd "$prefix/deb" && apt-get download -qq "python3-paraview=$version" 2>/dev/null)
+  # apt-get download needs the package lists, which an image may have removed since paraview's install.
+  if ! (cd "$prefix/deb" && apt-get download -qq "python3-paraview=$version" 2>/dev/null); then
+    $sudo apt-get update -qq
+    (cd "$prefix/deb" && apt-get download -qq "python3-paraview=$version") ||
+      { echo "setup: cannot download python3-paraview $version (apt-get download)" >&2; exit 1; }
+  fi
   dpkg-deb -x "$prefix"/deb/python3-paraview_*.deb "$prefix"
   rm -rf "$prefix/deb"
   cmakedir=/usr/lib/x86_64-linux-gnu/cmake/paraview-5.11
