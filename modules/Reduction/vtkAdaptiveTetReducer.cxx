@@ -277,46 +277,9 @@ int vtkAdaptiveTetReducer::RequestData(
     input = own;
   }
   art::ReducerOptions opt;
-  opt.TargetTets = this->TargetTets;
-  opt.TargetError = this->TargetError;
-  opt.ErrorMetric = this->ErrorMetric == MAX ? art::ReducerOptions::Metric::Max : art::ReducerOptions::Metric::RMS;
-  opt.ErrorRelative = this->ErrorRelative;
-  opt.RefineFraction = this->RefineFraction;
-  opt.ClampToVoxels = this->ClampToVoxels;
-  opt.CapOpacity = this->CapOpacity;
-  opt.RelocateVertices = this->RelocateVertices;
-  opt.SolverTolerance = this->SolverTolerance;
-  opt.Refine = this->Refinement == EDGE_SPLIT ? art::ReducerOptions::Refinement::EdgeSplit
-                                              : art::ReducerOptions::Refinement::Bisection;
-  opt.ImportanceFloor = this->ImportanceFloor;
-  opt.ImportanceRadius = this->ImportanceRadius;
-  if (this->ScalarOpacity)
+  if (!this->MakeOptions(opt))
   {
-    double node[4];
-    for (int i = 0; i < this->ScalarOpacity->GetSize(); ++i)
-    {
-      this->ScalarOpacity->GetNodeValue(i, node);
-      opt.ScalarOpacity.emplace_back(node[0], node[1]);
-    }
-    if (opt.ScalarOpacity.empty())
-    {
-      vtkErrorMacro("The scalar-opacity function has no nodes.");
-      return 0;
-    }
-    opt.IsoValues = this->IsoValues;
-  }
-  for (vtkIdType l : this->Levels)
-  {
-    if (l > 0 && (this->TargetTets <= 0 || l < this->TargetTets))
-    {
-      opt.Levels.push_back(l);
-    }
-    else if (l > 0)
-    {
-      // Port 1 had fewer blocks than levels added, without a word (probe12); reduce refuses it.
-      vtkWarningMacro("Level " << l << " is not below TargetTets " << this->TargetTets
-                                << ": the final grid is that level; it is left out of the levels.");
-    }
+    return 0;
   }
   // Progress is reported from the driver loop (this thread), never from worker threads. An
   // observer's SetAbortExecute(1) cancels the reduction at the next level, as VTK's filters stop.
@@ -396,45 +359,10 @@ int vtkAdaptiveTetReducer::RequestData(
     {
       SetWholeFigures(meshes.back(), whole);
     }
-    const art::ReducedMesh& last = meshes.back();
-    output->ShallowCopy(art::ToUnstructuredGrid(last, asDouble));
+    this->WriteMeshes(meshes, opt.Levels, input, asDouble, output, levels);
     if (distributed)
     {
       AddPieceFields(output, piece.Count, whole);
-    }
-    this->RMSError = last.Rms;
-    this->MaxError = last.Max;
-    this->BuildSeconds = last.BuildSeconds;
-    this->WeightedRMSError = last.WeightedRms;
-    this->WeightedMaxError = last.WeightedMax;
-    // The input's field data passes through, as VTK's dataset filters pass it, beside the
-    // reduction's own figures (which win a clash of names).
-    auto passFieldData = [input](vtkDataObject* out) {
-      vtkFieldData* in = input->GetFieldData();
-      for (int a = 0; in && a < in->GetNumberOfArrays(); ++a)
-      {
-        vtkAbstractArray* array = in->GetAbstractArray(a);
-        if (array && array->GetName() && !out->GetFieldData()->HasArray(array->GetName()))
-        {
-          out->GetFieldData()->AddArray(array);
-        }
-      }
-    };
-    passFieldData(output);
-    levels->SetNumberOfBlocks(static_cast<unsigned int>(meshes.size()));
-    for (unsigned int i = 0; i < meshes.size(); ++i)
-    {
-      vtkSmartPointer<vtkUnstructuredGrid> block = art::ToUnstructuredGrid(meshes[i], asDouble);
-      passFieldData(block);
-      levels->SetBlock(i, block);
-      levels->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(),
-        ("tets_" + std::to_string(meshes[i].NumberOfTets())).c_str());
-    }
-    // A level an error target stopped short of is not among the blocks: say so, as reduce does.
-    for (long long l : art::UnreachedLevels(opt.Levels, meshes))
-    {
-      vtkWarningMacro("Level " << l << " was not reached: the reduction stopped at " << last.NumberOfTets()
-                                << " tets.");
     }
   }
   catch (const art::Error& e)
@@ -450,6 +378,94 @@ int vtkAdaptiveTetReducer::RequestData(
     return 0;
   }
   return 1;
+}
+
+bool vtkAdaptiveTetReducer::MakeOptions(art::ReducerOptions& opt)
+{
+  opt.TargetTets = this->TargetTets;
+  opt.TargetError = this->TargetError;
+  opt.ErrorMetric = this->ErrorMetric == MAX ? art::ReducerOptions::Metric::Max : art::ReducerOptions::Metric::RMS;
+  opt.ErrorRelative = this->ErrorRelative;
+  opt.RefineFraction = this->RefineFraction;
+  opt.ClampToVoxels = this->ClampToVoxels;
+  opt.CapOpacity = this->CapOpacity;
+  opt.RelocateVertices = this->RelocateVertices;
+  opt.SolverTolerance = this->SolverTolerance;
+  opt.Refine = this->Refinement == EDGE_SPLIT ? art::ReducerOptions::Refinement::EdgeSplit
+                                              : art::ReducerOptions::Refinement::Bisection;
+  opt.ImportanceFloor = this->ImportanceFloor;
+  opt.ImportanceRadius = this->ImportanceRadius;
+  if (this->ScalarOpacity)
+  {
+    double node[4];
+    for (int i = 0; i < this->ScalarOpacity->GetSize(); ++i)
+    {
+      this->ScalarOpacity->GetNodeValue(i, node);
+      opt.ScalarOpacity.emplace_back(node[0], node[1]);
+    }
+    if (opt.ScalarOpacity.empty())
+    {
+      vtkErrorMacro("The scalar-opacity function has no nodes.");
+      return false;
+    }
+    opt.IsoValues = this->IsoValues;
+  }
+  for (vtkIdType l : this->Levels)
+  {
+    if (l > 0 && (this->TargetTets <= 0 || l < this->TargetTets))
+    {
+      opt.Levels.push_back(l);
+    }
+    else if (l > 0)
+    {
+      // Port 1 would hold fewer blocks than levels added, without a word; reduce refuses it too.
+      vtkWarningMacro("Level " << l << " is not below TargetTets " << this->TargetTets
+                                << ": the final grid is that level; it is left out of the levels.");
+    }
+  }
+  return true;
+}
+
+void vtkAdaptiveTetReducer::WriteMeshes(const std::vector<art::ReducedMesh>& meshes,
+  const std::vector<long long>& levels, vtkImageData* input, bool asDouble, vtkUnstructuredGrid* output,
+  vtkMultiBlockDataSet* blocks)
+{
+  const art::ReducedMesh& last = meshes.back();
+  output->ShallowCopy(art::ToUnstructuredGrid(last, asDouble));
+  this->RMSError = last.Rms;
+  this->MaxError = last.Max;
+  this->BuildSeconds = last.BuildSeconds;
+  this->WeightedRMSError = last.WeightedRms;
+  this->WeightedMaxError = last.WeightedMax;
+  // The input's field data passes through, as VTK's dataset filters pass it, beside the
+  // reduction's own figures (which win a clash of names).
+  auto passFieldData = [input](vtkDataObject* out) {
+    vtkFieldData* in = input->GetFieldData();
+    for (int a = 0; in && a < in->GetNumberOfArrays(); ++a)
+    {
+      vtkAbstractArray* array = in->GetAbstractArray(a);
+      if (array && array->GetName() && !out->GetFieldData()->HasArray(array->GetName()))
+      {
+        out->GetFieldData()->AddArray(array);
+      }
+    }
+  };
+  passFieldData(output);
+  blocks->SetNumberOfBlocks(static_cast<unsigned int>(meshes.size()));
+  for (unsigned int i = 0; i < meshes.size(); ++i)
+  {
+    vtkSmartPointer<vtkUnstructuredGrid> block = art::ToUnstructuredGrid(meshes[i], asDouble);
+    passFieldData(block);
+    blocks->SetBlock(i, block);
+    blocks->GetMetaData(i)->Set(vtkCompositeDataSet::NAME(),
+      ("tets_" + std::to_string(meshes[i].NumberOfTets())).c_str());
+  }
+  // A level an error target stopped short of is not among the blocks: say so, as reduce does.
+  for (long long l : art::UnreachedLevels(levels, meshes))
+  {
+    vtkWarningMacro("Level " << l << " was not reached: the reduction stopped at " << last.NumberOfTets()
+                              << " tets.");
+  }
 }
 
 vtkSmartPointer<vtkImageData> vtkAdaptiveTetReducer::SelectVoxels(vtkImageData* input, bool& onCells, std::string& error)

@@ -48,13 +48,13 @@ class vtkMultiBlockDataSet;
 class vtkMultiProcessController;
 class vtkPiecewiseFunction;
 class vtkUnstructuredGrid;
-#ifndef __VTK_WRAP__
 namespace art
 {
 class Progress;
+struct ReducedMesh;
+struct ReducerOptions;
 struct VoxelVolume;
 }
-#endif
 
 class ADAPTIVERTREDUCTION_EXPORT vtkAdaptiveTetReducer : public vtkUnstructuredGridAlgorithm
 {
@@ -334,6 +334,11 @@ private:
    * `error` saying why, when there is none.
    */
   vtkSmartPointer<vtkImageData> SelectVoxels(vtkImageData* input, bool& onCells, std::string& error);
+  /** The reduction's options from the properties; false (after an error) when they cannot be met. */
+  bool MakeOptions(art::ReducerOptions& opt);
+  /** The last mesh on port 0, every mesh as a block of port 1, the figures of the last. */
+  void WriteMeshes(const std::vector<art::ReducedMesh>& meshes, const std::vector<long long>& levels,
+    vtkImageData* input, bool asDouble, vtkUnstructuredGrid* output, vtkMultiBlockDataSet* blocks);
 
   vtkAdaptiveTetReducer(const vtkAdaptiveTetReducer&) = delete;
   void operator=(const vtkAdaptiveTetReducer&) = delete;
