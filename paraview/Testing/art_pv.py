@@ -1,4 +1,4 @@
-"""Helpers of the plugin's pvbatch tests: the camera `adaptivert render` frames its data with,
+"""Shared functions of the plugin's pvbatch tests: the camera `adaptivert render` frames its data with,
 the transfer function of a 'scalar r g b opacity' file, one still screenshot, and where things are."""
 import json
 import math

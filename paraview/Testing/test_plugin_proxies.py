@@ -1,5 +1,5 @@
 """pvbatch loads the plugin (PV_PLUGIN_PATH): the filter, the representation type and the cell
-locator are there under the names the issue gives, with the properties a user sets; the filter's
+locator are there under their documented names (docs/paraview.md), with the properties a user sets; the filter's
 Levels output holds a block per level."""
 import sys
 
