@@ -83,14 +83,15 @@ for label, name, factor, tets, repeats in volumes:
         rows.append({"volume": label, "file": name, "tets_budget": tets, "ranks": ranks, "tets": times["tets"],
                      "weighted_rms": reduced[0].get("weighted_rms_error", [0])[0],
                      "reduce_seconds": times["reduce_seconds"], "render_seconds": times["render_seconds"],
-                     "per_rank": per_rank, "image": os.path.join(d, "frame.png")})
+                     "per_rank": per_rank, "image": os.path.relpath(os.path.join(d, "frame.png"), root)})
 
 # Image agreement: each split's frame against one rank's of the same volume (the meshes differ:
 # each split is a reduction of its own).
 adaptivert = os.path.join(root, "build", "bin", "adaptivert")
 for row in rows:
     one = next(r for r in rows if r["volume"] == row["volume"] and r["ranks"] == 1)
-    run = subprocess.run([adaptivert, "compare", "--json", "--quiet", row["image"], one["image"]],
+    run = subprocess.run([adaptivert, "compare", "--json", "--quiet", os.path.join(root, row["image"]),
+                          os.path.join(root, one["image"])],
                          capture_output=True, text=True, check=True)
     row["psnr_vs_one_rank"] = json.loads(run.stdout)["psnr_db"]
 
