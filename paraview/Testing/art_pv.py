@@ -69,9 +69,24 @@ def show_tets(source, array, size=(400, 400), path=TF_FILE, **settings):
     return view, display
 
 
+def camera_of_render(view, camera):
+    """The camera `adaptivert render --json` reported (its "camera" object) on `view`."""
+    view.CameraPosition = camera["position"]
+    view.CameraFocalPoint = camera["focal_point"]
+    view.CameraViewUp = camera["view_up"]
+    view.CameraViewAngle = camera["view_angle"]
+    view.CameraParallelProjection = 1 if camera["parallel"] else 0
+    view.CameraParallelScale = camera["parallel_scale"]
+
+
+def render_json(*args):
+    """`adaptivert render ARGS --json`'s report (its camera among it)."""
+    return json.loads(adaptivert("render", *args, "--json"))
+
+
 def frame_like_render(view, bounds, size, azimuth=0.0, elevation=0.0):
-    """The camera of `adaptivert render` (art::Camera::DefaultView, then Frame): looking along +y
-    with z up at the bounds' centre, from where the bounding sphere fills the view angle."""
+    """A camera for comparing pvbatch images with each other: looking along +y with z up at the
+    bounds' centre, from where the bounding sphere fills the view angle (art::Camera::Frame)."""
     centre = [0.5 * (bounds[2 * a] + bounds[2 * a + 1]) for a in range(3)]
     radius = 0.5 * math.sqrt(sum((bounds[2 * a + 1] - bounds[2 * a]) ** 2 for a in range(3)))
     aspect = size[0] / size[1]

@@ -30,8 +30,8 @@ out = os.path.join(art_pv.OUTPUT, "pv-render")
 os.makedirs(out, exist_ok=True)
 cli_mesh, cli_png = os.path.join(out, "cli.vtu"), os.path.join(out, "cli.png")
 art_pv.adaptivert("reduce", art_pv.DEFAULT_CT, cli_mesh, "--tets", str(TETS), "--tf", art_pv.TF_FILE, "--quiet")
-art_pv.adaptivert("render", cli_mesh, "-o", cli_png, "--tf", art_pv.TF_FILE, "--size", "%dx%d" % SIZE, "--no-error",
-                  "--quiet")
+camera = art_pv.render_json(cli_mesh, "-o", cli_png, "--tf", art_pv.TF_FILE, "--size", "%dx%d" % SIZE, "--no-error",
+                            "--quiet")["camera"]
 
 # The reducer in ParaView, weighted by the same opacities: the same mesh.
 reader = OpenDataFile(art_pv.DEFAULT_CT)
@@ -53,7 +53,7 @@ for name in ("tets", "vertices", "rms_error", "weighted_rms_error", "max_error")
 window_png = None
 for label, source in (("cli-mesh", theirs), ("plugin-reduction", reducer)):
     view, display = art_pv.show_tets(source, "MetaImage", SIZE)
-    art_pv.frame_like_render(view, theirs.GetDataInformation().GetBounds(), SIZE)
+    art_pv.camera_of_render(view, camera)
     png = art_pv.screenshot(view, os.path.join(out, "pv-%s.png" % label), SIZE)
     if window_png is None:
         window_png = art_pv.vtk_window_render(cli_mesh, os.path.join(out, "vtk-window.png"), view, SIZE)
@@ -71,10 +71,10 @@ for label, source in (("cli-mesh", theirs), ("plugin-reduction", reducer)):
 default_png = os.path.join(out, "pv-cli-mesh.png")
 for label, settings, options, window_bound in SETTINGS:
     cli = os.path.join(out, "cli-%s.png" % label)
-    art_pv.adaptivert("render", cli_mesh, "-o", cli, "--tf", art_pv.TF_FILE, "--size", "%dx%d" % SIZE, "--no-error",
-                      "--quiet", *options)
+    shown = art_pv.render_json(cli_mesh, "-o", cli, "--tf", art_pv.TF_FILE, "--size", "%dx%d" % SIZE, "--no-error",
+                               "--quiet", *options)["camera"]
     view, display = art_pv.show_tets(theirs, "MetaImage", SIZE, **settings)
-    art_pv.frame_like_render(view, theirs.GetDataInformation().GetBounds(), SIZE)
+    art_pv.camera_of_render(view, shown)
     png = art_pv.screenshot(view, os.path.join(out, "pv-%s.png" % label), SIZE)
     window = art_pv.vtk_window_render(cli_mesh, os.path.join(out, "vtk-window-%s.png" % label), view, SIZE,
                                       options=options)
