@@ -70,7 +70,9 @@ def show_tets(source, array, size=(400, 400), path=TF_FILE, **settings):
 
 
 def camera_of_render(view, camera):
-    """The camera `adaptivert render --json` reported (its "camera" object) on `view`."""
+    """The camera `adaptivert render --json` reported (its "camera" object) on `view`. A view's
+    first Render resets its camera to the data, so that happens first."""
+    Render(view)
     view.CameraPosition = camera["position"]
     view.CameraFocalPoint = camera["focal_point"]
     view.CameraViewUp = camera["view_up"]
