@@ -1,0 +1,76 @@
+# MMG 5.8 (libmmg3d, LGPL-3), the anisotropic remesher behind `--refinement anisotropic`. Debian 12
+# does not package it; the PyPI wheel mmgpy 0.17.1 ships MMG's libraries, headers and CMake
+# package. Unless mmg_DIR points at an MMG already installed, the wheel (pinned by its SHA256) is
+# unpacked into the build tree (_deps/mmg) and found there with find_package(mmg). ART_MMG_WHEEL
+# names a local copy of the wheel for machines without network access.
+# Sets ART_HAVE_MMG, ART_MMG_INCLUDE_DIR and ART_MMG_LIBRARY; the library is copied beside ours
+# (build and install), where the Reduction module loads it from.
+set(_art_mmg_wheel_name "mmgpy-0.17.1-cp311-cp311-manylinux_2_27_x86_64.manylinux_2_28_x86_64.whl")
+set(_art_mmg_wheel_url
+  "https://files.pythonhosted.org/packages/49/05/4ca6a5acbda5c576da4e8f88d2fe27807f1ea57e860fbe59b154692f3cfc/${_art_mmg_wheel_name}")
+set(_art_mmg_wheel_sha256 "46b0ea94bafa3efe69e793e9b29460420211128a46cecb39dcea449ae8851d31")
+set(ART_MMG_WHEEL "" CACHE FILEPATH "A local copy of ${_art_mmg_wheel_name} (empty: download it)")
+option(ART_WITH_MMG "Build the anisotropic refinement (MMG)" ON)
+
+set(ART_HAVE_MMG OFF)
+set(_art_mmg_prefix "${CMAKE_BINARY_DIR}/_deps/mmg")
+if(ART_WITH_MMG AND NOT mmg_DIR AND NOT EXISTS "${_art_mmg_prefix}/lib64/cmake/mmg/mmgConfig.cmake")
+  set(_wheel "${ART_MMG_WHEEL}")
+  if(NOT _wheel)
+    set(_wheel "${CMAKE_BINARY_DIR}/_deps/${_art_mmg_wheel_name}")
+    if(NOT EXISTS "${_wheel}")
+      message(STATUS "MMG: downloading ${_art_mmg_wheel_name}")
+      file(DOWNLOAD "${_art_mmg_wheel_url}" "${_wheel}.part" STATUS _status
+        EXPECTED_HASH SHA256=${_art_mmg_wheel_sha256} TLS_VERIFY ON)
+      list(GET _status 0 _code)
+      if(_code EQUAL 0)
+        file(RENAME "${_wheel}.part" "${_wheel}")
+      else()
+        file(REMOVE "${_wheel}.part")
+        message(WARNING "MMG: download failed (${_status}); building without anisotropic refinement "
+          "(set ART_MMG_WHEEL to a copy of ${_art_mmg_wheel_name} or mmg_DIR to an MMG install)")
+      endif()
+    endif()
+  endif()
+  if(EXISTS "${_wheel}")
+    file(SHA256 "${_wheel}" _sum)
+    if(NOT _sum STREQUAL _art_mmg_wheel_sha256)
+      message(FATAL_ERROR "MMG: ${_wheel} is not the pinned ${_art_mmg_wheel_name} (SHA256 ${_sum})")
+    endif()
+    file(REMOVE_RECURSE "${_art_mmg_prefix}.unpack")
+    file(MAKE_DIRECTORY "${_art_mmg_prefix}.unpack")
+    execute_process(COMMAND "${CMAKE_COMMAND}" -E tar xf "${_wheel}"
+      WORKING_DIRECTORY "${_art_mmg_prefix}.unpack" RESULT_VARIABLE _rc)
+    if(NOT _rc EQUAL 0 OR NOT EXISTS "${_art_mmg_prefix}.unpack/lib64/cmake/mmg/mmgConfig.cmake")
+      message(FATAL_ERROR "MMG: could not unpack ${_wheel}")
+    endif()
+    file(REMOVE_RECURSE "${_art_mmg_prefix}")
+    file(RENAME "${_art_mmg_prefix}.unpack" "${_art_mmg_prefix}")
+  endif()
+endif()
+
+if(ART_WITH_MMG)
+  find_package(mmg CONFIG QUIET PATHS "${_art_mmg_prefix}/lib64/cmake/mmg" NO_DEFAULT_PATH)
+  if(NOT mmg_FOUND)
+    find_package(mmg CONFIG QUIET)
+  endif()
+endif()
+if(TARGET Mmg::libmmg3d_so)
+  get_target_property(ART_MMG_INCLUDE_DIR Mmg::libmmg3d_so INTERFACE_INCLUDE_DIRECTORIES)
+  list(GET ART_MMG_INCLUDE_DIR 0 ART_MMG_INCLUDE_DIR)
+  get_target_property(ART_MMG_LIBRARY Mmg::libmmg3d_so IMPORTED_LOCATION_RELEASE)
+  if(NOT ART_MMG_LIBRARY)
+    get_target_property(ART_MMG_LIBRARY Mmg::libmmg3d_so LOCATION)
+  endif()
+  if(EXISTS "${ART_MMG_INCLUDE_DIR}/mmg/mmg3d/libmmg3d.h" AND EXISTS "${ART_MMG_LIBRARY}")
+    set(ART_HAVE_MMG ON)
+    # Loaded by its soname from the directory of our own libraries (MmgRemesher).
+    file(MAKE_DIRECTORY "${CMAKE_LIBRARY_OUTPUT_DIRECTORY}")
+    configure_file("${ART_MMG_LIBRARY}" "${CMAKE_LIBRARY_OUTPUT_DIRECTORY}/libmmg3d.so.5" COPYONLY)
+    install(FILES "${ART_MMG_LIBRARY}" DESTINATION "${CMAKE_INSTALL_LIBDIR}" RENAME libmmg3d.so.5)
+    message(STATUS "MMG: ${ART_MMG_LIBRARY}")
+  endif()
+endif()
+if(ART_WITH_MMG AND NOT ART_HAVE_MMG)
+  message(WARNING "MMG not found: `--refinement anisotropic` will say so when asked for")
+endif()
