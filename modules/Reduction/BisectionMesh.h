@@ -33,8 +33,8 @@ public:
   /// box corners are rounded to voxel centres. Every tet starts with tag 3 (refinement edge =
   /// its box's main diagonal), which Maubach shows is a compatible initial tagging.
   void InitKuhn(const int dims[3], const int cubes[3]);
-  /// A mesh made elsewhere (TetGen's, of a closed surface), its vertices on the lattice: outside
-  /// the bisection hierarchy, so Refine and SplitEdge are refused. Throws art::Error when a tet
+  /// A mesh made elsewhere (TetGen's, of a closed surface; MMG's anisotropic remeshing), its
+  /// vertices on the lattice: outside the bisection hierarchy, so Refine and SplitEdge are refused. Throws art::Error when a tet
   /// names a vertex that does not exist.
   void InitFromTets(std::vector<LatticePoint> points, const std::vector<std::array<int, 4>>& tets);
 

@@ -152,6 +152,8 @@ void LatticeRefinement::Emit(long long budget, bool reached, int level)
   m.SolverIterations = Iterations;
   m.BuildSeconds = Plan.Elapsed();
   m.Weighted = Importance != nullptr;
+  m.Refinement = Opt.Refine == ReducerOptions::Refinement::EdgeSplit ? "edge" : "bisection";
+  m.Nested = !Opt.RelocateVertices;
   if (OnLevel)
   {
     OnLevel(m);

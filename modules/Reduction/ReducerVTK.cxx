@@ -9,6 +9,7 @@
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkStringArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkImageData.h>
@@ -241,6 +242,11 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bo
   {
     WriteSourceStatistics(fd, m.Source);
   }
+  field("levels_nested", m.Nested ? 1.0 : 0.0);
+  auto refinement = vtkSmartPointer<vtkStringArray>::New();
+  refinement->SetName("refinement");
+  refinement->InsertNextValue(m.Refinement);
+  fd->AddArray(refinement);
   return grid;
 }
 

@@ -1,6 +1,7 @@
 // ReducerVTK: the reducer's VTK edges. vtkImageData -> VoxelVolume (with the checks a user
 // mistake needs), ReducedMesh -> vtkUnstructuredGrid of VTK_TETRA with point scalars named like
-// the input, per-tet "approximation_error" and "max_error", and the run's figures as field data.
+// the input, per-tet "approximation_error" and "max_error", and the run's figures as field data
+// (among them "refinement", a string, and "levels_nested", 1 or 0).
 #ifndef art_ReducerVTK_h
 #define art_ReducerVTK_h
 

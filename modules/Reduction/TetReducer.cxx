@@ -1,5 +1,6 @@
 #include "TetReducer.h"
 
+#include "AnisotropicAdaptation.h"
 #include "AvailableMemory.h"
 #include "Error.h"
 #include "LatticeRefinement.h"
@@ -51,9 +52,13 @@ void TetReducer::CoarseGrid(const VoxelVolume& volume, long long tets, int cubes
 namespace
 {
 // Peak bytes a tet of the mesh costs (measured peaks of reduce on CTs of 200^3 and 300^3 voxels),
-// with the relocator's own arrays or without.
+// with the relocator's own arrays or without, or MMG's mesh and the fit of an anisotropic one.
 double BytesPerTet(const ReducerOptions& o)
 {
+  if (o.Refine == ReducerOptions::Refinement::Anisotropic)
+  {
+    return AnisotropicAdaptation::BytesPerTet();
+  }
   return o.RelocateVertices ? 570.0 : 350.0;
 }
 } // namespace
@@ -68,7 +73,8 @@ double TetReducer::MemoryNeeded(long long voxels) const
   // Refinement ends at the full-resolution tets, 5 a voxel cell.
   tets = std::min(tets, 5 * std::max(voxels, 0LL));
   const double perTet = BytesPerTet(Opt);
-  const double perVoxel = Opt.ScalarOpacity.empty() ? 0.0 : 28.0;
+  const double perVoxel = (Opt.ScalarOpacity.empty() ? 0.0 : 28.0) +
+    (Opt.Refine == ReducerOptions::Refinement::Anisotropic ? AnisotropicAdaptation::BytesPerVoxel() : 0.0);
   return perTet * double(tets) + perVoxel * double(voxels);
 }
 
@@ -115,6 +121,10 @@ std::vector<ReducedMesh> TetReducer::Run(const VoxelVolume& volume, Progress* pr
 {
   const ReductionPlan plan = ReductionPlan::For(Opt, volume);
   CheckMemory(volume, AvailableMemoryBytes());
+  if (Opt.Refine == ReducerOptions::Refinement::Anisotropic)
+  {
+    return ReduceAnisotropic(volume, Opt, plan, progress, onLevel);
+  }
   return LatticeRefinement(*this, volume, plan, progress, onLevel).Run();
 }
 

@@ -34,6 +34,7 @@
 #define art_TetReducer_h
 
 #include "AdaptiveRTReductionModule.h"
+#include "HessianMetric.h"
 #include "VoxelVolume.h"
 
 #include <functional>
@@ -60,7 +61,8 @@ struct ReducerOptions
   enum class Refinement
   {
     Bisection,
-    EdgeSplit
+    EdgeSplit,
+    Anisotropic
   };
   long long TargetTets = 0;      ///< stop at this many tets (0: not set)
   double TargetError = -1;       ///< stop when the global error is at most this (< 0: not set);
@@ -102,6 +104,15 @@ struct ReducerOptions
   bool RelocateVertices = false;
   int RelocateSweeps = 3;           ///< Gauss-Seidel sweeps of the relocation
   double RelocateQualityFloor = 0.2; ///< shape floor a moved tet keeps (VertexRelocator)
+  /// Refinement::Anisotropic (AnisotropicAdaptation): the metric MMG adapts each level to, the
+  /// power of the transfer function's weight that scales it, whether MMG moves vertices, and
+  /// the remeshings a level may take again while its tet count is off the budget by more than
+  /// BudgetTolerance.
+  MetricOptions Metric;
+  double MetricWeightExponent = 0.5;
+  bool RemeshMovesVertices = true;
+  int AdaptationRetries = 2;
+  double BudgetTolerance = 0.05;
 };
 
 /// One output level: a tet mesh with the fitted values and its errors against the voxels.
@@ -123,6 +134,8 @@ struct ReducedMesh
   bool TargetReached = true;  ///< false when refinement ran out before the error bound
   int RefinementLevels = 0, SolverIterations = 0;
   std::string ScalarName;
+  std::string Refinement = "bisection"; ///< how it was made: bisection, edge or anisotropic
+  bool Nested = true; ///< each level's tets are unions of the next level's (not with relocation or anisotropic)
 
   long long NumberOfTets() const { return static_cast<long long>(Tets.size() / 4); }
   long long NumberOfVertices() const { return static_cast<long long>(Points.size() / 3); }

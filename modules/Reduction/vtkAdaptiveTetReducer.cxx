@@ -392,7 +392,8 @@ bool vtkAdaptiveTetReducer::MakeOptions(art::ReducerOptions& opt)
   opt.RelocateVertices = this->RelocateVertices;
   opt.SolverTolerance = this->SolverTolerance;
   opt.Refine = this->Refinement == EDGE_SPLIT ? art::ReducerOptions::Refinement::EdgeSplit
-                                              : art::ReducerOptions::Refinement::Bisection;
+    : this->Refinement == ANISOTROPIC          ? art::ReducerOptions::Refinement::Anisotropic
+                                               : art::ReducerOptions::Refinement::Bisection;
   opt.ImportanceFloor = this->ImportanceFloor;
   opt.ImportanceRadius = this->ImportanceRadius;
   if (this->ScalarOpacity)
@@ -558,7 +559,9 @@ void vtkAdaptiveTetReducer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RelocateVertices: " << this->RelocateVertices << "\n";
   os << indent << "SolverTolerance: " << this->SolverTolerance << "\n";
   os << indent << "VectorMode: " << this->VectorMode << " (component " << this->VectorComponent << ")\n";
-  os << indent << "Refinement: " << (this->Refinement == EDGE_SPLIT ? "EDGE_SPLIT" : "BISECTION") << "\n";
+  os << indent << "Refinement: "
+     << (this->Refinement == EDGE_SPLIT ? "EDGE_SPLIT" : this->Refinement == ANISOTROPIC ? "ANISOTROPIC" : "BISECTION")
+     << "\n";
   os << indent << "Levels: " << this->Levels.size() << "\n";
   os << indent << "IsoValues: " << this->IsoValues.size() << "\n";
   os << indent << "RMSError: " << this->RMSError << "\n";
