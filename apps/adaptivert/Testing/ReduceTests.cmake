@@ -50,7 +50,7 @@ art_expect_test(cli.reduce_levels EXIT 0 STDOUT "level .*reduce_lv_500.vtu.*leve
 art_expect_test(cli.reduce_edge_split EXIT 0
   STDOUT "tets +[23],[0-9][0-9][0-9] \\([0-9.]+% of the voxel count\\), [0-9,]+ vertices.*error +RMS [0-9.]+, max [0-9.]+ data units"
   ARGS reduce "${_ct}" "${_out}/reduce_edge.vtu" --tets 3000 --refinement edge)
-art_expect_test(cli.reduce_bad_refinement EXIT 2 STDERR "--refinement is bisection or edge, got 'red'" ONE_LINE_STDERR
+art_expect_test(cli.reduce_bad_refinement EXIT 2 STDERR "--refinement is bisection, edge or anisotropic, got 'red'" ONE_LINE_STDERR
   ARGS reduce "${_ct}" "${_out}/x.vtu" --tets 100 --refinement red)
 art_expect_test(cli.reduce_error_bound EXIT 0 STDOUT "error +RMS [0-9.]+.*\\(([0-2]\\.[0-9]+|3\\.000)% /"
   ARGS reduce "${_ct}" "${_out}/reduce_err.vtu" --max-error 3%)
@@ -96,3 +96,26 @@ art_expect_test(cli.render_past_full_resolution EXIT 0
   ARGS render "${_bad}/rgb-3x3x3.vti" -o "${_out}/full-res.png" --array rgb:1 --tets 1000 --size 16x16 --no-error -q)
 art_expect_test(cli.reduce_tets_hexadecimal EXIT 2 STDERR "--tets wants a positive number or a percentage, got '0x10'"
   ONE_LINE_STDERR ARGS reduce "${_ct}" "${ART_TEST_OUTPUT}/never.vtu" --tets 0x10)
+# --refinement anisotropic: MMG3D to the Hessian metric, the budget met within 5%, levels not nested.
+art_expect_test(cli.reduce_anisotropic EXIT 0
+  STDOUT "level .*reduce_aniso_1000.vtu: (9[5-9][0-9]|1,0[0-4][0-9]) tets.*output .*reduce_aniso.vtu: (2,8[5-9][0-9]|2,9[0-9][0-9]|3,0[0-9][0-9]|3,1[0-4][0-9]) tets.*levels +not nested \\(each remeshed by MMG3D"
+  ARGS reduce "${_ct}" "${_out}/reduce_aniso.vtu" --tets 3000 --levels 1000 --refinement anisotropic -q)
+art_expect_test(cli.reduce_anisotropic_json EXIT 0 STDOUT "\"refinement\":\"anisotropic\",\"levels_nested\":false"
+  ARGS reduce --json --quiet "${_ct}" "${_out}/reduce_aniso_json.vtu" --tets 1500 --refinement anisotropic --tf ct-bone)
+# A missing or broken MMG is one line naming the library and the way out; the other refinements
+# do not need it.
+art_expect_test(cli.reduce_anisotropic_without_mmg EXIT 1 ONE_LINE_STDERR
+  STDERR "ct-head-128.mha: anisotropic refinement needs MMG \\(libmmg3d 5.8\\): cannot load /nonexistent/libmmg3d.so.5: .*set ART_MMG_LIBRARY to its path"
+  PROGRAM "${CMAKE_COMMAND}" ARGS -E env ART_MMG_LIBRARY=/nonexistent/libmmg3d.so.5 "$<TARGET_FILE:adaptivert>"
+  reduce "${_ct}" "${_out}/x.vtu" --tets 1000 --refinement anisotropic -q)
+art_expect_test(cli.reduce_anisotropic_broken_mmg EXIT 1 ONE_LINE_STDERR
+  STDERR "anisotropic refinement needs MMG \\(libmmg3d 5.8\\): cannot load .*README.md: .*"
+  PROGRAM "${CMAKE_COMMAND}" ARGS -E env "ART_MMG_LIBRARY=${CMAKE_SOURCE_DIR}/data/README.md" "$<TARGET_FILE:adaptivert>"
+  reduce "${_ct}" "${_out}/x.vtu" --tets 1000 --refinement anisotropic -q)
+art_expect_test(cli.reduce_anisotropic_not_mmg EXIT 1 ONE_LINE_STDERR
+  STDERR "anisotropic refinement needs MMG \\(libmmg3d 5.8\\): .*libAdaptiveRTCore[^ ]* is not MMG 5's libmmg3d \\(it has no MMG3D_Init_mesh\\)"
+  PROGRAM "${CMAKE_COMMAND}" ARGS -E env "ART_MMG_LIBRARY=$<TARGET_FILE:AdaptiveRT::Core>" "$<TARGET_FILE:adaptivert>"
+  reduce "${_ct}" "${_out}/x.vtu" --tets 1000 --refinement anisotropic -q)
+art_expect_test(cli.reduce_bisection_without_mmg EXIT 0 STDOUT "output .*reduce_no_mmg.vtu: "
+  PROGRAM "${CMAKE_COMMAND}" ARGS -E env ART_MMG_LIBRARY=/nonexistent/libmmg3d.so.5 "$<TARGET_FILE:adaptivert>"
+  reduce "${_ct}" "${_out}/reduce_no_mmg.vtu" --tets 1000 -q)

@@ -289,3 +289,8 @@ art_render_baseline_test(image.labels_categorical BASELINE labels-cubes.png MIN_
   ARGS "${CMAKE_SOURCE_DIR}/tests/data/meshing/cubes-labels.vtu" --size 96x96 --azimuth 30 --elevation 30)
 art_expect_test(cli.render_label_mesh EXIT 0 STDOUT "mesh +label mesh: 1044 tets"
   ARGS render "${CMAKE_SOURCE_DIR}/tests/data/meshing/cubes-labels.vtu" -o "${ART_TEST_OUTPUT}/labels.png" --size 32x32 --quiet)
+# --refinement anisotropic reduces through MMG3D; the label says so and the image is scored.
+art_expect_test(cli.render_tets_anisotropic EXIT 0
+  STDOUT "least-squares reduction, anisotropic \\(MMG3D\\), RMS error [0-9.]+.*: (1[89][0-9][0-9]|20[0-9][0-9]) tets.*error +PSNR [0-9.]+ dB"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/aniso.png" --size 48x48 --tets 2000
+  --refinement anisotropic --plain-reduction -q)

@@ -139,8 +139,7 @@ int Run(const cli::Options& o)
   // Ours: one nested run emits every level; each level's time is the build time up to it.
   const std::string refinement = o.Get("red-refinement");
   art::ReducerOptions opt;
-  opt.Refine = cli::ParseEdgeRefinement(refinement, "--red-refinement") ? art::ReducerOptions::Refinement::EdgeSplit
-                                                                          : art::ReducerOptions::Refinement::Bisection;
+  opt.Refine = cli::ParseRefinement(refinement, "--red-refinement");
   opt.Levels = levels;
   opt.RelocateVertices = o.Flag("red-relocate");
   std::vector<Row> rows(levels.size());

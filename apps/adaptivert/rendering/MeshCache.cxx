@@ -3,6 +3,7 @@
 #ifdef ART_HAVE_Reduction
 #include "DataLoader.h"
 #include "Error.h"
+#include "MmgRemesher.h"
 #include "ReducerVTK.h"
 #include "SourceStatistics.h"
 #include "cli/Subprocess.h"
@@ -147,6 +148,11 @@ bool FromGrid(vtkUnstructuredGrid* g, art::ReducedMesh& m)
   m.TargetReached = Field(fd, "target_reached", 1.0) != 0.0;
   m.RefinementLevels = static_cast<int>(Field(fd, "refinement_levels"));
   m.SolverIterations = static_cast<int>(Field(fd, "solver_iterations"));
+  m.Nested = Field(fd, "levels_nested", 1.0) != 0.0;
+  if (auto* r = vtkStringArray::SafeDownCast(fd->GetAbstractArray("refinement")))
+  {
+    m.Refinement = r->GetNumberOfValues() ? r->GetValue(0) : m.Refinement;
+  }
   return true;
 }
 } // namespace
@@ -174,7 +180,10 @@ MeshCache::MeshCache(const std::string& dir, const art::VoxelVolume& v, const ar
     << " " << o.RefineFraction << " " << o.SolverTolerance << " " << o.Regularization << " " << o.MinEdgeVoxels
     << " " << int(o.Refine) << " " << o.CoarseTets << " " << o.ClampToVoxels << " " << o.CapOpacity << " "
     << o.ImportanceFloor << " " << o.ImportanceRadius << " " << o.ReweighSteps << " " << o.RelocateVertices << " "
-    << o.RelocateSweeps << " " << o.RelocateQualityFloor << " levels";
+    << o.RelocateSweeps << " " << o.RelocateQualityFloor << " metric " << o.Metric.Sigma << " " << o.Metric.TensorSigma
+    << " " << o.Metric.Exponent << " " << o.Metric.Hmin << " " << o.Metric.Hmax << " " << o.Metric.Floor << " "
+    << o.MetricWeightExponent << " " << o.RemeshMovesVertices << " " << o.AdaptationRetries << " " << o.BudgetTolerance
+    << " levels";
   for (long long l : o.Levels)
   {
     k << " " << l;
@@ -191,6 +200,10 @@ MeshCache::MeshCache(const std::string& dir, const art::VoxelVolume& v, const ar
   }
   k << "\ntool " << FileStamp(SelfExecutable()) << " "
     << FileOf(reinterpret_cast<const void*>(&art::TetReducer::CoarseGrid));
+  if (o.Refine == art::ReducerOptions::Refinement::Anisotropic)
+  {
+    k << " " << FileStamp(art::MmgRemesher::LibraryPath());
+  }
   Key = k.str();
   Hash128 kh;
   kh.Add(Key.data(), Key.size());

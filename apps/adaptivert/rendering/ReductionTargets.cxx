@@ -41,15 +41,6 @@ double ParseMaxError(const std::string& s, bool& relative)
   return relative ? v / 100.0 : v;
 }
 
-bool ParseEdgeRefinement(const std::string& s, const std::string& what)
-{
-  if (s != "bisection" && s != "edge")
-  {
-    throw UsageError(what + " is bisection or edge, got '" + s + "'");
-  }
-  return s == "edge";
-}
-
 } // namespace cli
 
 #ifdef ART_HAVE_Reduction
@@ -57,6 +48,24 @@ bool ParseEdgeRefinement(const std::string& s, const std::string& what)
 
 namespace cli
 {
+art::ReducerOptions::Refinement ParseRefinement(const std::string& s, const std::string& what)
+{
+  using R = art::ReducerOptions::Refinement;
+  if (s == "bisection")
+  {
+    return R::Bisection;
+  }
+  if (s == "edge")
+  {
+    return R::EdgeSplit;
+  }
+  if (s == "anisotropic")
+  {
+    return R::Anisotropic;
+  }
+  throw UsageError(what + " is bisection, edge or anisotropic, got '" + s + "'");
+}
+
 std::string UnreachedReason(const art::ReducedMesh& m, const art::VoxelVolume& v, bool errorBoundAlone)
 {
   if (m.TargetReached)

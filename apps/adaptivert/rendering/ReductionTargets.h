@@ -1,6 +1,6 @@
 // ReductionTargets: the reducer's stopping targets as the command line spells them, shared by
 // `reduce` and `render`: --tets N or P% (of the voxel count), --max-error E or P% (of the range),
-// and how it refines, --refinement bisection|edge.
+// and how it refines, --refinement bisection|edge|anisotropic.
 #ifndef adaptivert_ReductionTargets_h
 #define adaptivert_ReductionTargets_h
 
@@ -12,9 +12,6 @@ namespace cli
 long long ParseBudget(const std::string& s, long long voxels, const std::string& what);
 /// "E" or "P%" -> the error bound and whether it is a fraction of the scalar range (P / 100).
 double ParseMaxError(const std::string& s, bool& relative);
-/// "edge" -> true (error-driven edge splits), "bisection" -> false; throws UsageError naming
-/// `what` (the option) otherwise.
-bool ParseEdgeRefinement(const std::string& s, const std::string& what);
 }
 
 #ifdef ART_HAVE_Reduction
@@ -23,6 +20,10 @@ bool ParseEdgeRefinement(const std::string& s, const std::string& what);
 
 namespace cli
 {
+/// "bisection", "edge" (error-driven edge splits) or "anisotropic" (MMG3D); throws UsageError
+/// naming `what` (the option) otherwise.
+art::ReducerOptions::Refinement ParseRefinement(const std::string& s, const std::string& what);
+
 /// Why the reduction of `v` stopped short of level m's target ("" when it reached it): the fit is
 /// exact, the voxels allow no finer tets, or an error bound alone (no --tets) stops at one tet
 /// per voxel.

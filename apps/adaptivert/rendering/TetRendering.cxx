@@ -80,9 +80,10 @@ void Declare(cli::Options& o)
   o.Add("max-error", 0, "E",
     "reduce a volume until the RMS error (opacity-weighted unless --plain-reduction) is at most E data units "
     "(E% of the scalar range)");
-  o.Add("refinement", 0, "bisection|edge",
-    "how a volume is reduced: bisection (newest-vertex, near-regular tets) or edge (split the edges that remove the "
-    "most error: thin tets along sharp surfaces, sharper images per tet, slower)",
+  o.Add("refinement", 0, "bisection|edge|anisotropic",
+    "how a volume is reduced: bisection (newest-vertex, near-regular tets), edge (split the edges that remove the "
+    "most error: thin tets along sharp surfaces, sharper images per tet, slower) or anisotropic (MMG3D remeshes to "
+    "the voxels' Hessian metric: tets long along surfaces and thin across them)",
     "bisection");
   o.Add("relocate", 0, "",
     "after reducing, move the vertices off the bisection lattice toward the surfaces they fit (the default "
@@ -261,8 +262,7 @@ void AddNote(std::string& note, const std::string& text)
 art::ReducerOptions ReductionFor(const cli::Options& o, const art::RenderSettings& settings, long long voxels)
 {
   art::ReducerOptions ro;
-  ro.Refine = cli::ParseEdgeRefinement(o.Get("refinement"), "--refinement") ? art::ReducerOptions::Refinement::EdgeSplit
-                                                                            : art::ReducerOptions::Refinement::Bisection;
+  ro.Refine = cli::ParseRefinement(o.Get("refinement"), "--refinement");
   if (o.Has("tets"))
   {
     ro.TargetTets = cli::ParseBudget(o.Get("tets"), voxels, "--tets");
@@ -286,7 +286,8 @@ art::ReducerOptions ReductionFor(const cli::Options& o, const art::RenderSetting
   // Not by default under iso-surfaces: on the CT's head rest (thin struts) the relocated fit
   // crosses an iso-value in blobs where the voxels have thin lines (a worse picture than the
   // lattice's).
-  ro.RelocateVertices = o.Flag("relocate") || (!o.Flag("no-relocate") && settings.isos.empty());
+  ro.RelocateVertices = o.Flag("relocate") ||
+    (!o.Flag("no-relocate") && settings.isos.empty() && ro.Refine != art::ReducerOptions::Refinement::Anisotropic);
   // Maximum intensity shows the fit's overshoot at sharp edges as bright facets.
   ro.ClampToVoxels = settings.mode == art::RenderSettings::Mode::MaxIntensity;
   return ro;
@@ -351,6 +352,7 @@ void ReduceVolume(const cli::Options& o, const std::string& input, Scene& sc, ar
   std::ostringstream ss;
   ss << std::setprecision(4) // errors to four digits (87.34 HU); counts are integers
      << "adaptive tets (" << (r.Weighted ? "opacity-weighted " : "") << "least-squares reduction"
+     << (ro.Refine == art::ReducerOptions::Refinement::Anisotropic ? ", anisotropic (MMG3D)" : "")
      << (ro.RelocateVertices ? ", vertices relocated" : "")
      << (ro.ClampToVoxels ? ", clamped to the voxel range" : "") << ", RMS error " << r.Rms << ", max " << r.Max;
   if (r.Weighted)
