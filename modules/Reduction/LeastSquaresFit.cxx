@@ -203,9 +203,9 @@ int LeastSquaresFit::Solve(const BisectionMesh& mesh, std::vector<double>& x, do
 {
   const int nv = mesh.NumberOfVertices();
   // Solved for x - shift, the mean voxel value: CG stops at a residual relative to the right-hand
-  // side, which a large offset would dominate (1000 + 1e-6 variations stopped at an error of 7x
-  // their range). The shifted right-hand side comes straight from the moments, which are relative
-  // to each tet's own F0, so no digits of the variation are lost.
+  // side, which a large offset would dominate (small variations on a large offset stopped far
+  // from their fit). The shifted right-hand side comes straight from the moments, which are
+  // relative to each tet's own F0, so no digits of the variation are lost.
   double shift = 0, count = 0;
   for (int t = 0; t < mesh.NumberOfTets(); ++t)
   {

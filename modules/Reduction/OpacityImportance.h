@@ -2,12 +2,6 @@
 // more than the scene needs"; the weighted L2 norm of the seed's error estimate, Grosso et al. Vis '97
 // section 4, with the opacity's sensitivity as the weight). A scalar error ds changes opacity by
 // about alpha'(s) ds, so a voxel weighs (max |alpha'| over its neighbourhood's scalar range)^2.
-// Measured (bench tets, 128 CT, ct-skin-bone, 500 x 500): PSNR 22.60 / 23.86 / 25.48 / 27.35 dB at
-// 10k / 25k / 50k / 100k tets against 22.24 / 23.86 / 25.22 / 27.29 for the plain fit: a small gain,
-// far from 35 dB at 1% of the vertices. A quarter of the voxels have an opacity ramp within two
-// voxels (skin, bone, the head rest); linear tets of >= 2 voxels widen those thin shells, and no
-// weighting of the fit can narrow them (an interval fit that let zero-opacity voxels float, and
-// interpolating the vertices instead of fitting, were tried and measured worse).
 #ifndef art_OpacityImportance_h
 #define art_OpacityImportance_h
 

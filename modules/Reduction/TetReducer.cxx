@@ -16,8 +16,7 @@ void TetReducer::CoarseGrid(const VoxelVolume& volume, long long tets, int cubes
 {
   // Boxes about cubic in world units, but never more than twice as many voxels along one axis as
   // along another: bisection stops at edges of MinEdgeVoxels, so a box only one voxel thick along
-  // thick slices stops the other axes at a few times the box's voxels. A 30 x 30 x 8 cylinder of
-  // 0.4 x 0.4 x 5 mm voxels reduced to 2000 tets had an RMS of 354 (80 at 1 x 1 x 1 mm); 228 now.
+  // thick slices would stop the other axes at a few times the box's voxels.
   double L[3];
   const double smin = std::min({ std::fabs(volume.Spacing[0]), std::fabs(volume.Spacing[1]), std::fabs(volume.Spacing[2]) });
   for (int a = 0; a < 3; ++a)
@@ -101,7 +100,7 @@ void TetReducer::CheckMemory(const VoxelVolume& volume, double availableBytes) c
 void TetReducer::CheckGrowth(const VoxelVolume& volume, long long tets, long long next, double availableBytes) const
 {
   // The whole next mesh, not only the tets added: its arrays grow by reallocation, the old copy
-  // alive beside the new (under a 1.2 GB cap, counting only the added tets ran out of memory).
+  // alive beside the new.
   const double need = BytesPerTet(Opt) * double(std::max(0LL, next));
   if (!ExceedsAvailableMemory(need, availableBytes))
   {

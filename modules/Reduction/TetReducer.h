@@ -1,35 +1,15 @@
-// TetReducer: the multilevel least-squares reducer from voxels to an adaptive tet grid (Grosso,
-// Luerig & Ertl, Vis '97): coarse Kuhn mesh -> L2 fit -> per-tet error -> bisect the worst ->
-// re-fit warm-started -> ... until a tet budget or an error bound; nested levels on the way.
-//
-// Refinement choice: newest-vertex bisection (BisectionMesh), not red-green, TetGen or CGAL.
-// It is exact on an integer lattice (each voxel centre in exactly one tet; deterministic), stays
-// conforming with a short closure, adds one tet per bisection (a budget is met to a few tets),
-// keeps shapes in a few similarity classes (min dihedral 42.6 deg on the full CT at 200k tets),
-// and the old fit is exactly representable on the refined mesh, so the warm start is exact.
-// Measured (adaptivert bench reduction, CT head, paper's levels 0.01%..1%): RMS error 0.75-0.83 x
-// uniform downsampling at equal vertices on the full 256x256x108 CT (0.81-0.89 x on the 128
-// default). VTK's quadric decimation leaves a third or more of the voxel centres uncovered; on
-// those it covers, at its own tet count, ours is 1.33-1.57 x its RMS: its freely placed,
-// anisotropic tets suit CT edges better than isotropic bisection. TetGen/CGAL sizing-field
-// refinement was not built: no exact nesting. RefineFraction 0.05-0.5, MinEdgeVoxels 1-3,
-// Regularization 0.05-3, the coarse mesh size and a bisection-gain priority move these ratios by
-// at most a few percent (reduction_results/README.md). Automatic growth: bisection grows by half
-// a level while the mesh is under a quarter of the next budget, then by a fifth (opacity-weighted,
-// each level is a voxel pass: full CT to 200k tets 20.7 -> 17.6 s on one thread, rendered PSNR
-// 23.47 -> 23.61 dB; growing by half all the way lost 1.2 dB on a 512 x 512 x 215 CT at 500k tets);
-// edge splits by a fifth throughout (by half, their RMS at 200k tets rose 18%). Weighted levels
-// re-gather only the tets whose voxels can weigh differently at the new fit
-// (LeastSquaresFit::Reweigh, exact): full CT to 200k tets 17.6 -> 11.3 s on one thread, a
-// 512 x 512 x 215 CT to 500k tets 155 -> 61 s on two, for 8 more bytes a voxel.
-// Option Refinement::EdgeSplit splits, best first, the edges whose split (star and all, at the
-// midpoint or a quarter point) removes the most squared error per added tet: still nested,
-// conforming and exact on the lattice, and anisotropic. Full CT: RMS 0.90-0.96 x bisection's at
-// the six levels, 0.79 x at 200k tets, but min dihedral near 0 deg and about 3 x the time, so it
-// is not the default (figures in that README).
-// Option RelocateVertices (VertexRelocator) moves each output's vertices off the lattice onto the
-// surfaces they fit, then refits: full CT 17-30% lower RMS at the paper's levels (0.53-0.67 x
-// uniform), but 4-5 x the time and min dihedral ~9 deg, so it is not the default either.
+// TetReducer: voxels to an adaptive tet grid fitted in the least-squares sense (Grosso, Luerig &
+// Ertl, Vis '97), to tet budgets (levels emitted on the way) or an error bound. The refinements:
+// - Bisection (default, LatticeRefinement): newest-vertex bisection on an exact integer lattice
+//   (BisectionMesh): every voxel centre in exactly one tet, deterministic, conforming with a
+//   short closure, budgets met to a few tets, near-regular shapes, nested levels whose warm
+//   start is exact. Chosen over red-green refinement or a sizing-field mesher for that nesting.
+// - EdgeSplit (EdgeSplitRefiner): the edges whose split removes the most error per added tet;
+//   still nested and exact on the lattice, with thin tets along sharp surfaces.
+// - Anisotropic (AnisotropicAdaptation): MMG3D remeshes the box to the voxels' Hessian metric;
+//   tets long along surfaces and thin across them, levels not nested.
+// RelocateVertices (VertexRelocator) moves each output's vertices off the lattice onto the
+// surfaces they fit, then refits. Figures: tests/benchmarks/reduction_results/README.md.
 #ifndef art_TetReducer_h
 #define art_TetReducer_h
 
@@ -88,9 +68,8 @@ struct ReducerOptions
   /// gives the voxels under its vertex's tets is clamped to their range. The least-squares fit
   /// overshoots past thin bright structures (a head rest of a few voxels) into ranges no voxel
   /// there has, which render as opaque speckles; overshoot into clearer ranges sharpens surfaces
-  /// and is kept. Measured (128 CT, ct-skin-bone, 500 x 500 against the voxel reference): PSNR
-  /// 23.01 / 24.82 / 26.16 -> 23.08 / 25.05 / 29.20 dB at 10k / 50k / 250k tets; clamping both
-  /// ways (ClampToVoxels) gave 21.4 / 23.3 / 28.3 dB. The fit and the levels after are unchanged.
+  /// and is kept (a better image than clamping both ways, ClampToVoxels). The fit and the levels
+  /// after are unchanged.
   bool CapOpacity = true;
   /// With ScalarOpacity: iso-surfaces drawn over it. Voxels next to one weigh as much as the
   /// steepest opacity ramp (OpacityImportance::SetIsoValues), so the fit places the surfaces.
@@ -153,10 +132,10 @@ public:
   std::vector<ReducedMesh> Run(const VoxelVolume& volume, Progress* progress = nullptr,
     const std::function<void(const ReducedMesh&)>& onLevel = {}) const;
 
-  /// Bytes a run on `voxels` samples still allocates beyond them, from peak memory measured on
-  /// reduce (200^3 and 300^3 CTs, 80k and 800k tets): about 350 a tet of the largest budget (570
-  /// with RelocateVertices) and, with ScalarOpacity, 28 a voxel (the opacity weights, their
-  /// neighbourhood ranges and the fit's reweighing). An error bound alone counts no tets.
+  /// Bytes a run on `voxels` samples still allocates beyond them, from reduce's peak memory: about
+  /// 350 a tet of the largest budget (570 with RelocateVertices, 900 anisotropic) and 28 a voxel
+  /// with ScalarOpacity (the opacity weights, their neighbourhood ranges and the fit's
+  /// reweighing), 40 more anisotropic (the metric). An error bound alone counts no tets.
   double MemoryNeeded(long long voxels) const;
   /// Throws art::Error naming volume.File, its voxels and the memory needed and available, with
   /// the way out, when MemoryNeeded passes 90% of availableBytes (0: unknown, not checked). Run

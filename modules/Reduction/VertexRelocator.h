@@ -49,7 +49,7 @@ public:
   /// relaxed in parallel (colour classes): the same result for any thread count. With an
   /// `importance` (prepared), errors are OpacityImportance's weighted ones, each voxel weighed
   /// at the fit relocated from (frozen: the star errors then come from weighted moments as the
-  /// plain ones do; 28% fewer instructions than reweighing each candidate, the same images).
+  /// plain ones do: cheaper than reweighing each candidate, and the same images).
   /// Sse* are the weights at each fit.
   /// `progress` (optional) gets a stage "relocate" and may cancel it (art::Error "cancelled").
   static RelocationStats Relocate(BisectionMesh& mesh, const VoxelVolume& volume, std::vector<double>& x,

@@ -5,14 +5,16 @@
  * The multilevel finite-element reducer of Grosso, Luerig & Ertl (Vis '97): a coarse conforming
  * tetrahedrisation of the volume's box is refined by newest-vertex bisection where the best
  * piecewise-linear (L2) fit of the voxels is worst, until TargetTets or TargetError is met
- * (whichever is set; with both, whichever comes first).
+ * (whichever is set; with both, whichever comes first). SetRefinementToAnisotropic() remeshes
+ * the box with MMG3D to the voxels' Hessian metric instead (see SetRefinement).
  *
  * Output port 0: vtkUnstructuredGrid of VTK_TETRA with point scalars named like the input (the
  * fit at each vertex; double for double, 32- and 64-bit integer input, else float), cell arrays "approximation_error" (RMS over the voxels a tet owns) and
  * "max_error", and field data rms_error, max_error, tets, vertices, build_seconds,
  * target_tets, target_error and source_spacing (the input's mean voxel spacing, which a
  * transfer-function preset's opacity unit distance follows). Output port 1: a vtkMultiBlockDataSet holding one such grid per
- * level added with AddLevel (a nested series from one run, coarsest first) and the final grid
+ * level added with AddLevel (a series from one run, coarsest first; nested unless relocated or
+ * anisotropic) and the final grid
  * (GetOutputDataObject(1); GetOutput(1) casts it to a grid and gives null, from Python None).
  *
  * The reduced array is the point scalars (without them the first one-component point array, as
@@ -113,8 +115,8 @@ public:
 
   /**
    * Move each output mesh's vertices off the bisection lattice to lower their star's error, then
-   * refit (default off): vertices settle on sharp surfaces, RMS falls 15-30% at the same tets on
-   * a CT; tets get flatter (shape floor 0.2), the levels on port 1 are no longer nested, and the
+   * refit (default off): vertices settle on sharp surfaces and the RMS falls at the same tets;
+   * tets get flatter (shape floor 0.2), the levels on port 1 are no longer nested, and the
    * reduction is far slower.
    */
   vtkSetMacro(RelocateVertices, bool);
@@ -186,8 +188,8 @@ public:
   /**
    * With a ScalarOpacity: iso-values a renderer draws over it. Voxels next to one weigh as much
    * as the steepest opacity ramp, so the fit places those surfaces where the opacity alone would
-   * not ask for tets (a skin iso-surface over a bone transfer function: 0.8 dB better PSNR on the
-   * CT head at 50k tets; see art::ReducerOptions::IsoValues).
+   * not ask for tets (a skin iso-surface over a bone transfer function; see
+   * art::ReducerOptions::IsoValues).
    */
   void AddIsoValue(double value);
   void RemoveAllIsoValues();
@@ -197,8 +199,8 @@ public:
   /**
    * With a ScalarOpacity: clamp an output value to the range of the voxels under its vertex's
    * tets when its opacity exceeds every opacity those voxels have (default on). The fit's
-   * overshoot past thin bright structures otherwise renders as opaque speckles; 0.4-4 dB better
-   * PSNR on the CT head (see art::ReducerOptions::CapOpacity).
+   * overshoot past thin bright structures otherwise renders as opaque speckles (see
+   * art::ReducerOptions::CapOpacity).
    */
   vtkSetMacro(CapOpacity, bool);
   vtkGetMacro(CapOpacity, bool);

@@ -65,7 +65,7 @@ TEST(TetReducer, LinearRampIsReproducedByTheCoarseMesh)
 }
 
 // The stage reaches 1 only once the output is made: the output's values and their errors over every
-// voxel (5 s of 18 on a 400 x 400 x 300 volume) came after the bar showed 100%.
+// voxel (seconds on a large volume) must not come after the bar shows 100%.
 TEST(TetReducer, ProgressReachesOneAfterTheOutput)
 {
   const int d[3] = { 24, 20, 18 };
@@ -95,10 +95,10 @@ TEST(TetReducer, ProgressReachesOneAfterTheOutput)
   }
 }
 
-// The first fit's passes over every voxel move the bar: a 512 x 512 x 400 CT weighted to 200k
-// tets sat at 0% for 35 s in them. Here one refinement level is left (the coarse mesh is nearly
-// the budget), so before the passes reported, the bar jumped from 0 to 95%. After relocation the
-// stage resumes where it was, not from 0.
+// The first fit's passes over every voxel move the bar (on a large weighted volume they take
+// tens of seconds). Here one refinement level is left (the coarse mesh is nearly the budget), so
+// without them reporting the bar would jump from 0 to 95%. After relocation the stage resumes
+// where it was, not from 0.
 TEST(TetReducer, ProgressMovesDuringTheFirstFit)
 {
   const int d[3] = { 40, 36, 30 };

@@ -270,7 +270,7 @@ for array, kind in ((vtkTypeInt32Array, "double"), (vtkTypeInt64Array, "double")
 
 # The input's field data passes through beside the reduction's figures (VTK's dataset filters pass
 # it; it was dropped), and a level the final grid already is, or one an error target stops short
-# of, is named in a warning instead of leaving port 1 a block short without a word (probe12).
+# of, is named in a warning instead of leaving port 1 a block short without a word.
 from vtkmodules.vtkCommonCore import vtkStringArray
 tagged = image((12, 10, 9), lambda x, y, z: x * x + y - z)
 note = vtkStringArray()
