@@ -27,11 +27,13 @@ ReductionWorker::~ReductionWorker()
   }
 }
 
-art::ReducerOptions ReductionWorker::ShowingWith(const art::TransferFunction& tf)
+art::ReducerOptions ReductionWorker::ShowingWith(const art::TransferFunction& tf, const std::string& refinement)
 {
+  using R = art::ReducerOptions::Refinement;
   art::ReducerOptions opt;
   opt.ScalarOpacity = tf.OpacityPoints();
-  opt.RelocateVertices = true;
+  opt.Refine = refinement == "anisotropic" ? R::Anisotropic : refinement == "edge" ? R::EdgeSplit : R::Bisection;
+  opt.RelocateVertices = opt.Refine != R::Anisotropic;
   return opt;
 }
 

@@ -35,9 +35,11 @@ public:
   /// reducer's other settings (their TargetTets and Levels are the budgets').
   ReductionWorker(art::VoxelVolume volume, std::vector<long long> budgets, art::ReducerOptions options = {});
   /// The settings `adaptivert render` reduces with for a transfer function (composite, no
-  /// iso-surface): the fit weighted by its opacity, then the vertices relocated (closer to the
-  /// voxels' picture than the plain lattice fit at the same tets, for several times the time).
-  static art::ReducerOptions ShowingWith(const art::TransferFunction& tf);
+  /// iso-surface) and a refinement: the fit weighted by its opacity, then, on the lattice, the
+  /// vertices relocated (closer to the voxels' picture than the plain lattice fit at the same
+  /// tets, for several times the time).
+  /// `refinement` is bisection, edge or anisotropic (ViewerOptions checked it).
+  static art::ReducerOptions ShowingWith(const art::TransferFunction& tf, const std::string& refinement = "bisection");
   /// Cancels a running reduction and waits for the thread.
   ~ReductionWorker();
   ReductionWorker(const ReductionWorker&) = delete;

@@ -33,10 +33,11 @@ ViewerApp::ViewerApp(ViewerOptions options)
   Impl->Opt = std::move(options);
   const ViewerOptions& o = Impl->Opt;
   const art::DataKind kind = art::KindOf(o.File, o.Load); // before loading: a large scene need not be read to say this
-  if (o.TetsGiven && kind != art::DataKind::Volume)
+  if ((o.TetsGiven || o.Refinement != "bisection") && kind != art::DataKind::Volume)
   {
     // A mesh or a triangle scene is shown as it is: its --tets levels were ignored without a word.
-    throw UsageError("--tets sets the reduction levels of a volume; " + o.File + " is a " +
+    throw UsageError(std::string(o.TetsGiven ? "--tets sets" : "--refinement makes") + " the reduction levels of a volume; " +
+      o.File + " is a " +
       (kind == art::DataKind::Surface ? "triangle scene" : "tet mesh") + ", shown as it is");
   }
   if (kind == art::DataKind::Surface && (!o.Array.empty() || o.TfGiven))
@@ -103,7 +104,8 @@ ViewerApp::ViewerApp(ViewerOptions options)
   if (Impl->Scene.Image) // the voxel checks (NaN, 2-D, components) fail here, before any window
   {
     Impl->Worker = std::make_unique<ReductionWorker>(art::VolumeFromImage(Impl->Scene.Image, Impl->Opt.File),
-      Budgets(Impl->Opt, Impl->Scene.Image->GetNumberOfPoints()), ReductionWorker::ShowingWith(Impl->Scene.Transfer));
+      Budgets(Impl->Opt, Impl->Scene.Image->GetNumberOfPoints()),
+      ReductionWorker::ShowingWith(Impl->Scene.Transfer, Impl->Opt.Refinement));
   }
 #endif
 }

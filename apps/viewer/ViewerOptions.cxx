@@ -43,6 +43,9 @@ std::string UsageText()
          "  --size WxH           window size in pixels (default 800x600)\n"
          "  --tets N[,N...]      reduction levels for a volume, counts or P% of the voxel count\n"
          "                       (default 2000,10000,40000)\n"
+         "  --refinement R       how the levels are made, as `adaptivert render --refinement`: bisection\n"
+         "                       (default; nested, vertices relocated), edge, or anisotropic (MMG3D to\n"
+         "                       the voxels' Hessian metric; each level adapted anew, not nested)\n"
          "  --array NAME         point (or cell) array to show (default: the active scalars);\n"
          "                       NAME:magnitude or NAME:N for a vector's magnitude or component N\n"
          "  --tf NAME|FILE       transfer function: auto (ct-skin-bone on CT in Hounsfield units, else\n"
@@ -98,8 +101,9 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
       a = a.substr(0, eq);
       inlineValue = true;
     }
-    static const char* withValue[] = { "--size", "--tets", "--array", "--tf", "--script", "--screenshot", "--frame",
-      "--raw-dims", "--raw-type", "--raw-spacing", "--raw-header", "--raw-endian", "--raw-components" };
+    static const char* withValue[] = { "--size", "--tets", "--refinement", "--array", "--tf", "--script",
+      "--screenshot", "--frame", "--raw-dims", "--raw-type", "--raw-spacing", "--raw-header", "--raw-endian",
+      "--raw-components" };
     if (std::find(std::begin(withValue), std::end(withValue), a) == std::end(withValue))
     {
       throw UsageError("unknown option '" + a + "'");
@@ -179,6 +183,14 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
       }
       std::sort(o.Tets.begin(), o.Tets.end());
       o.Tets.erase(std::unique(o.Tets.begin(), o.Tets.end()), o.Tets.end());
+    }
+    else if (a == "--refinement")
+    {
+      if (value != "bisection" && value != "edge" && value != "anisotropic")
+      {
+        throw UsageError("--refinement is bisection, edge or anisotropic, got '" + value + "'");
+      }
+      o.Refinement = value;
     }
     else if (a == "--array")
     {

@@ -1,5 +1,5 @@
-// ViewerOptions: the command line of adaptivert-view (FILE, --size, --tets, --array, --tf, --script,
-// --screenshot, --help). Parsing never touches VTK, so usage errors come before any window.
+// ViewerOptions: the command line of adaptivert-view (FILE, --size, --tets, --refinement, --array,
+// --tf, --script, --screenshot, --help). Parsing never touches VTK, so usage errors come before any window.
 #ifndef art_ViewerOptions_h
 #define art_ViewerOptions_h
 
@@ -24,6 +24,7 @@ struct ViewerOptions
   std::vector<long long> Tets;   ///< nested reduction budgets, ascending (volumes)
   std::vector<double> TetPercents; ///< more budgets as percentages of the voxel count
   bool TetsGiven = false;         ///< --tets was given (it applies to volumes only)
+  std::string Refinement = "bisection"; ///< how the levels are made: bisection, edge or anisotropic
   std::string Array;             ///< point (or cell) array to show (default: the active scalars)
   art::LoadOptions Load;         ///< --frame and a raw volume's --raw-* layout (Array is set on use)
   std::string TransferFunction = "auto";

@@ -93,6 +93,21 @@ TEST(ViewerOptions, UsageErrors)
   EXPECT_NO_THROW(Parse({ "--tf", "my/tf.txt", "a.mha" })); // a file, read at load time
   EXPECT_THROW(Parse({ "--offscreen", "a.mha" }), UsageError);
   EXPECT_THROW(Parse({ "a.mha", "--script" }), UsageError);
+  EXPECT_THROW(Parse({ "--refinement", "octree", "a.mha" }), UsageError);
+}
+
+TEST(ViewerOptions, Refinement)
+{
+  EXPECT_EQ(Parse({ "a.mha" }).Refinement, "bisection");
+  EXPECT_EQ(Parse({ "--refinement", "anisotropic", "a.mha" }).Refinement, "anisotropic");
+  EXPECT_EQ(Parse({ "--refinement=edge", "a.mha" }).Refinement, "edge");
+  // Anisotropic levels are each adapted anew (MMG3D), not relocated; the lattice ones are.
+  const art::TransferFunction tf = art::TransferFunction::Preset("grey-ramp", 0, 1);
+  const art::ReducerOptions a = ReductionWorker::ShowingWith(tf, "anisotropic");
+  EXPECT_EQ(a.Refine, art::ReducerOptions::Refinement::Anisotropic);
+  EXPECT_FALSE(a.RelocateVertices);
+  EXPECT_FALSE(a.ScalarOpacity.empty());
+  EXPECT_TRUE(ReductionWorker::ShowingWith(tf).RelocateVertices);
 }
 
 TEST(ViewerControls, LevelsStayInRange)
@@ -324,6 +339,22 @@ TEST(ReductionWorker, ReducesForTheTransferFunctionShown)
   EXPECT_EQ(relocated[0].NumberOfTets(), onLattice[0].NumberOfTets());
   EXPECT_LT(relocated[0].WeightedRms, 0.9 * onLattice[0].WeightedRms)
     << relocated[0].WeightedRms << " vs " << onLattice[0].WeightedRms;
+}
+
+TEST(ReductionWorker, DeliversAnisotropicLevels)
+{
+  // Levels made by MMG3D, each within 5% of its budget, with a progress that only rises.
+  ReductionWorker w(Sphere(24), { 1000, 2500 },
+    ReductionWorker::ShowingWith(art::TransferFunction::Preset("grey-ramp", 0, 21), "anisotropic"));
+  const WorkerRun run = RunToEnd(w);
+  ASSERT_EQ(run.levels.size(), 2u);
+  EXPECT_TRUE(run.monotone);
+  for (const auto& m : run.levels)
+  {
+    EXPECT_EQ(m.Refinement, "anisotropic");
+    EXPECT_FALSE(m.Nested);
+    EXPECT_LE(std::fabs(double(m.NumberOfTets() - m.TargetTets)), 0.05 * m.TargetTets) << m.NumberOfTets();
+  }
 }
 
 TEST(ReductionWorker, DestroyingCancelsPromptly)
