@@ -1,4 +1,5 @@
-"""Chart for `adaptivert bench reduction`: error against tets for the reducer and its anchors."""
+"""Chart for `adaptivert bench reduction`: RMS error against vertices and against tets for each
+refinement series, uniform downsampling and VTK's quadric decimation; build time against vertices."""
 import json
 import sys
 
@@ -9,28 +10,41 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 src, png = sys.argv[1], sys.argv[2]
 d = json.load(open(src))
-rows = d["rows"]
-fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
-for ax, key, label in ((axes[0], "rms", "RMS error"), (axes[1], "max", "max error")):
-    ax.plot([r["tets"] for r in rows], [r[key] for r in rows], "o-", label="least-squares reducer (ours)")
-    if d.get("quadric"):
-        ax.plot([r["quadric_tets"] for r in rows], [r["quadric_" + key] for r in rows], "s--",
-                label="vtkUnstructuredGridQuadricDecimation")
-        if key == "rms":
-            ax.plot([r["quadric_tets"] for r in rows], [r["quadric_covered_rms"] for r in rows], "s:",
-                    color="C1", alpha=0.6, label="quadric, covered voxels only")
-            if "ours_at_quadric_tets_covered_rms" in rows[0]:
-                ax.plot([r["ours_at_quadric_tets"] for r in rows], [r["ours_at_quadric_tets_covered_rms"] for r in rows],
-                        "o:", color="C0", alpha=0.6, label="ours at its tets, on the voxels it covers")
-    ax.plot([r["uniform_tets"] for r in rows], [r["uniform_" + key] for r in rows], "^:",
-            label="uniform downsampling (same vertices)")
+markers = {"bisection": "o", "relocated": "D", "edge": "v", "anisotropic": "*"}
+fig, axes = plt.subplots(1, 3, figsize=(16, 4.8))
+for i, s in enumerate(d["series"]):
+    rows, timed = s["rows"], s.get("timed", [])
+    m, c = markers.get(s["name"], "o"), "C%d" % i
+    for ax, x in ((axes[0], "vertices"), (axes[1], "tets")):
+        ax.plot([r[x] for r in rows], [r["rms"] for r in rows], m + "-", color=c, label=s["name"])
+        if timed:
+            ax.plot([r[x] for r in timed], [r["rms"] for r in timed], m, color=c, mfc="none", ms=11,
+                    label=s["name"] + ", run alone")
+    axes[2].plot([r["vertices"] for r in rows + timed], [r["seconds"] for r in rows + timed], m, color=c,
+                 label=s["name"])
+# Uniform downsampling at the vertex counts of every mesh (it depends on the count alone).
+uni = sorted({(r["uniform_vertices"], r["uniform_rms"]) for s in d["series"] for r in s["rows"] + s.get("timed", [])})
+axes[0].plot([u[0] for u in uni], [u[1] for u in uni], "^:", color="grey", label="uniform downsampling")
+if d.get("quadric"):
+    q = d["quadric_rows"]
+    for ax, x in ((axes[0], "vertices"), (axes[1], "tets")):
+        ax.plot([r[x] for r in q], [r["covered_rms"] for r in q], "s--", color="black", alpha=0.6,
+                label="quadric decimation (covered voxels)")
+for ax, x in ((axes[0], "vertices"), (axes[1], "tetrahedra")):
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("tetrahedra")
-    ax.set_ylabel(label + " (HU)")
+    ax.set_xlabel(x)
+    ax.set_ylabel("RMS error (data units)")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7)
+axes[2].set_xscale("log")
+axes[2].set_yscale("log")
+axes[2].set_xlabel("vertices")
+axes[2].set_ylabel("build seconds (cumulative over a run of levels)")
+axes[2].grid(True, which="both", alpha=0.3)
+axes[2].legend(fontsize=7)
 dims = " x ".join(str(int(v)) for v in d["dims"])
-fig.suptitle("Reduction of %s (%s voxels), commit %s" % (d["input"].split("/")[-1], dims, d["commit"]))
+fig.suptitle("Reduction of %s (%s voxels), %d threads, commit %s" % (d["input"].split("/")[-1], dims, d["threads"],
+                                                                      d["commit"]))
 fig.tight_layout()
 fig.savefig(png, dpi=110)
