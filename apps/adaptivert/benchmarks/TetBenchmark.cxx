@@ -58,7 +58,7 @@ namespace
 {
 struct Row
 {
-  std::string method, mesh;
+  std::string method, mesh, series; // series: the reduction's refinement, "full" or "voxels"
   long long tets = 0, vertices = 0;
   cli::BenchStats seconds;
   art::ImageMetricsResult err;
@@ -148,6 +148,30 @@ private:
   vtkNew<vtkRenderWindow> Win;
 };
 
+// --tets-series, checked before any work; --tets-no-relocate turns relocated into bisection.
+std::vector<std::string> SeriesNames(const cli::Options& o)
+{
+  std::vector<std::string> out;
+  std::stringstream ss(o.Get("tets-series"));
+  std::string s;
+  while (std::getline(ss, s, ','))
+  {
+    if (s == "relocated" && o.Flag("tets-no-relocate"))
+    {
+      s = "bisection";
+    }
+    if (s != "relocated" && s != "bisection" && s != "anisotropic")
+    {
+      throw cli::UsageError("--tets-series takes relocated, bisection and anisotropic, got '" + s + "'");
+    }
+    if (std::find(out.begin(), out.end(), s) == out.end())
+    {
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
 void Declare(cli::Options& o)
 {
   o.Add("tets-input", 0, "FILE", "volume for `bench tets`", cli::DataDir() + "/ct-head-128.mha");
@@ -155,14 +179,62 @@ void Declare(cli::Options& o)
   o.Add("tets-size", 0, "WxH", "image size for `bench tets`", "500x500");
   o.Add("tets-tf", 0, "NAME|FILE", "transfer function for `bench tets`", "ct-skin-bone");
   o.Add("tets-plain-reduction", 0, "", "reduce in plain L2, not weighted by the transfer function's opacity");
-  o.Add("tets-no-relocate", 0, "", "keep the reduced vertices on the bisection lattice (render --no-relocate)");
+  o.Add("tets-series", 0, "LIST",
+    "reduction series rendered side by side: relocated (render's lattice refinement), bisection (no relocation), "
+    "anisotropic (MMG3D)", "relocated,anisotropic");
+  o.Add("tets-no-relocate", 0, "", "the relocated series without relocation (as --tets-series bisection)");
   o.Add("tets-bunyk-max", 0, "N", "largest mesh (tets) given to VTK's Bunyk mapper", "1000000");
   o.Add("tets-no-vtk", 0, "", "skip VTK's mappers (they need a display)");
+}
+
+// Per series, the smallest mesh whose headline render reaches FixedPoint's PSNR, and its time
+// against FixedPoint's.
+void FixedPointMatch(const std::vector<Row>& rows, long long voxels, std::ostringstream& md)
+{
+  const auto fp = std::find_if(rows.begin(), rows.end(), [](const Row& r) { return r.series == "voxels"; });
+  if (fp == rows.end())
+  {
+    return;
+  }
+  char line[512];
+  std::vector<std::string> done;
+  for (const Row& r : rows)
+  {
+    if (r.series == "voxels" || r.series == "full" || std::find(done.begin(), done.end(), r.series) != done.end())
+    {
+      continue;
+    }
+    done.push_back(r.series);
+    const Row* best = nullptr;
+    for (const Row& q : rows)
+    {
+      if (q.series == r.series && q.method == "ours exact, ERT 0.99" && q.err.psnr >= fp->err.psnr &&
+        (!best || q.vertices < best->vertices))
+      {
+        best = &q;
+      }
+    }
+    if (best)
+    {
+      std::snprintf(line, sizeof line,
+        "- %s: the smallest mesh at FixedPoint's PSNR (%.2f dB) is %s (%.2f%% of the vertices): %.2f dB in %.3f s, "
+        "%.2fx FixedPoint's time (%.3f s)\n",
+        r.series.c_str(), fp->err.psnr, best->mesh.c_str(), 100.0 * best->vertices / voxels, best->err.psnr,
+        best->seconds.median, best->seconds.median / fp->seconds.median, fp->seconds.median);
+    }
+    else
+    {
+      std::snprintf(line, sizeof line, "- %s: no mesh of the series reaches FixedPoint's PSNR (%.2f dB)\n",
+        r.series.c_str(), fp->err.psnr);
+    }
+    md << line;
+  }
 }
 
 int Run(const cli::Options& o)
 {
   const std::string in = o.Get("tets-input");
+  const std::vector<std::string> seriesNames = SeriesNames(o); // a usage error before any work
   const std::string dir = o.Get("results");
   const int runs = static_cast<int>(std::max(1LL, o.GetInt("runs")));
   int W, H;
@@ -202,10 +274,10 @@ int Run(const cli::Options& o)
   const art::Image ref = OverBlack(refRaw);
   art::WriteImage(ref, dir + "/tets-reference.png");
 
-  // The meshes: the reduction series (nested, one run) and full resolution.
+  // The meshes: each reduction series (one run of its levels) and full resolution.
   struct MeshEntry
   {
-    std::string name;
+    std::string name, series;
     std::unique_ptr<art::TetMesh> mesh;
     double rms = -1;
   };
@@ -220,27 +292,37 @@ int Run(const cli::Options& o)
       levels.push_back(std::stoll(item));
     }
     std::sort(levels.begin(), levels.end());
-    if (!levels.empty())
+    const art::VoxelVolume voxelVolume = art::VolumeFromImage(volume, in);
+    for (const std::string& series : seriesNames)
     {
-      std::fprintf(stderr, "reducing to %zu budgets ...\n", levels.size());
+      if (levels.empty())
+      {
+        break;
+      }
+      std::fprintf(stderr, "reducing to %zu budgets (%s) ...\n", levels.size(), series.c_str());
       art::ReducerOptions ro;
       ro.TargetTets = levels.back();
       ro.Levels = levels;
-      ro.RelocateVertices = !o.Flag("tets-no-relocate"); // as render reduces
+      ro.RelocateVertices = series == "relocated"; // as render reduces
+      if (series == "anisotropic")
+      {
+        ro.Refine = art::ReducerOptions::Refinement::Anisotropic;
+      }
       if (!o.Flag("tets-plain-reduction"))
       {
         ro.ScalarOpacity = tf.OpacityPoints();
       }
-      for (const auto& r : art::TetReducer(ro).Run(art::VolumeFromImage(volume, in)))
+      const std::string prefix = series == "anisotropic" ? "anisotropic " : "reduced ";
+      for (const auto& r : art::TetReducer(ro).Run(voxelVolume))
       {
-        meshes.push_back({ "reduced " + std::to_string(r.NumberOfTets()),
+        meshes.push_back({ prefix + std::to_string(r.NumberOfTets()), series,
           std::make_unique<art::TetMesh>(cli::ToTetMesh(r)), r.Rms });
       }
     }
   }
 #endif
   std::fprintf(stderr, "full-resolution tets ...\n");
-  meshes.push_back({ "full resolution", std::make_unique<art::TetMesh>(art::TetMesh::FromImage(volume, in)), 0.0 });
+  meshes.push_back({ "full resolution", "full", std::make_unique<art::TetMesh>(art::TetMesh::FromImage(volume, in)), 0.0 });
 
   std::vector<Row> rows;
   auto report = [&](const Row& r) {
@@ -267,7 +349,7 @@ int Run(const cli::Options& o)
     };
     std::vector<Method> methods;
     auto row = [&](const char* name) {
-      return Row{ name, me.name, static_cast<long long>(m.NumberOfTets()), static_cast<long long>(m.NumberOfPoints()) };
+      return Row{ name, me.name, me.series, static_cast<long long>(m.NumberOfTets()), static_cast<long long>(m.NumberOfPoints()) };
     };
     struct Variant
     {
@@ -358,7 +440,7 @@ int Run(const cli::Options& o)
     fp->SetImageSampleDistance(1.0f);
     fp->SetSampleDistance(0.5 * std::min(spacing[0], std::min(spacing[1], spacing[2])));
     VTKWindow win(fp, prop, cam, W, H);
-    Row r{ "VTK FixedPoint (voxels)", "voxels", 0, voxels };
+    Row r{ "VTK FixedPoint (voxels)", "voxels", "voxels", 0, voxels };
     r.seconds = cli::TimeRuns(runs, [&] { return win.Frame(); });
     const art::Image img = win.Read();
     r.err = art::CompareImages(img, ref);
@@ -373,7 +455,7 @@ int Run(const cli::Options& o)
   for (const Row& r : rows)
   {
     cli::Json j;
-    j.Set("method", r.method).Set("mesh", r.mesh).Set("tets", r.tets).Set("vertices", r.vertices)
+    j.Set("method", r.method).Set("mesh", r.mesh).Set("series", r.series).Set("tets", r.tets).Set("vertices", r.vertices)
       .Set("seconds", r.seconds.median).Set("seconds_min", r.seconds.lo).Set("seconds_max", r.seconds.hi)
       .Set("psnr", r.err.psnr).Set("ssim", r.err.ssim).Set("rmse", r.err.rmse)
       .Set("tets_per_ray", r.tetsPerRay).Set("ns_per_tet_crossed_per_thread", r.nsPerTet);
@@ -393,7 +475,7 @@ int Run(const cli::Options& o)
   md << "# Tet ray casting: the CT head reduction series (" << W << " x " << H << ")\n\n"
      << in << " (" << dims[0] << " x " << dims[1] << " x " << dims[2] << " voxels), transfer function " << tfName
      << (o.Flag("tets-plain-reduction") ? " (plain L2 reduction" : " (reduction weighted by its opacity")
-     << (o.Flag("tets-no-relocate") ? ")" : ", vertices relocated)")
+     << "; series: " << o.Get("tets-series") << (o.Flag("tets-no-relocate") ? ", no relocation)" : ")")
      << ", reference: voxel ray caster (trilinear, 2 samples/voxel, exact steps, no ERT; " << refStats.seconds
      << " s). " << cpu << ", " << art::GetThreadCount() << " threads, commit " << commit << ", " << date
      << ". Times: median of " << runs << " runs after a warm-up [min-max]; a mesh's methods are timed in turn, one frame each per round.\n\n"
@@ -446,6 +528,7 @@ int Run(const cli::Options& o)
       md << line;
     }
   }
+  FixedPointMatch(rows, voxels, md);
   std::ofstream(stem + ".md") << md.str();
   std::printf("%s", md.str().c_str());
 
