@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # AdaptiveRT set-up: installs the Debian packages it needs (only those missing, so a second run
-# is fast), configures and builds in Release with ninja, then optionally runs something.
+# is fast), configures and builds in Release with ninja, then optionally runs something. The
+# configure step downloads MMG (the pinned mmgpy wheel, cmake/AdaptiveRTMmg.cmake) over HTTPS,
+# hence ca-certificates; no python or pip is involved.
 #   cmake/setup.sh          set up and build
 #   cmake/setup.sh demo     ... then run the main job on the embedded default data
 #   cmake/setup.sh test     ... then run every test through ctest (under Xvfb when no display)
@@ -12,7 +14,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(
-  g++ cmake ninja-build pkg-config ccache git
+  g++ cmake ninja-build pkg-config ccache git ca-certificates
   libvtk9-dev python3-vtk9 python3-matplotlib
   libopenimageio-dev libtbb-dev
   libgtest-dev libembree-dev nlohmann-json3-dev
@@ -43,6 +45,9 @@ if [ ! -f build/build.ninja ]; then
   cmake --preset release >&2
 fi
 cmake --build --preset release >&2
+if ! grep -q '^ART_HAVE_MMG:INTERNAL=ON' build/CMakeCache.txt 2>/dev/null; then
+  echo "setup: MMG is missing (see cmake's warning above): --refinement anisotropic will refuse to run" >&2
+fi
 
 case "${1:-}" in
   "") ;;

@@ -15,6 +15,13 @@ execute_process(COMMAND "${PREFIX}/bin/adaptivert" demo --help RESULT_VARIABLE r
 if(rc OR NOT out MATCHES "${PREFIX}/share/adaptivert/data/ct-head-128.mha" OR NOT EXISTS "${PREFIX}/share/adaptivert/scripts/speed_accuracy_chart.py")
   message(FATAL_ERROR "installed adaptivert does not default to its installed data: ${out}${err}")
 endif()
+# The install carries MMG: the installed tool loads the libmmg3d beside its libraries.
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=ART_MMG_LIBRARY "${PREFIX}/bin/adaptivert" reduce
+  "${SOURCE}/data/ct-head-128.mha" "${PREFIX}/check-anisotropic.vtu" --tets 600 --refinement anisotropic -q
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc OR NOT EXISTS "${PREFIX}/check-anisotropic.vtu")
+  message(FATAL_ERROR "installed adaptivert cannot reduce with --refinement anisotropic: ${out}${err}")
+endif()
 # An EXR goes through the OpenImageIO plug-in, which the installed libraries must find beside them.
 execute_process(COMMAND "${PREFIX}/bin/adaptivert" render "${SOURCE}/data/ct-head-128.mha" -o "${PREFIX}/check.exr"
   --size 8x8 --tets 500 --no-error -q RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
