@@ -431,8 +431,11 @@ bool VertexVisit::Evaluate(int v, const LatticePoint& q, bool checked, Scratch& 
   {
     return false;
   }
-  value = srp / spp;
-  err = srr - srp * value;
+  // The best value, kept within the data's range: where v's hat is small on every voxel of its
+  // star (tets holding one voxel centre or none) the unconstrained value runs to many times the
+  // range, and the refit, anchored to it on those tets, keeps it.
+  value = std::min(Vol.Range[1], std::max(Vol.Range[0], srp / spp));
+  err = srr - 2.0 * srp * value + spp * value * value;
   sc.Count = count;
   return true;
 }
