@@ -166,7 +166,7 @@ foreach(_f pieces.pvtu blocks.vtm)
 endforeach()
 art_expect_test(cli.render_mesh_empty_vtm EXIT 1 STDERR "empty.vtm: holds no data sets in its blocks" ONE_LINE_STDERR
   ARGS render "${CMAKE_SOURCE_DIR}/tests/data/pieces/empty.vtm" -o "${_tmp}/x.png" --size 32x32)
-art_expect_test(cli.render_tets_bad_refinement EXIT 2 STDERR "--refinement is bisection or edge, got 'red-green'" ONE_LINE_STDERR
+art_expect_test(cli.render_tets_bad_refinement EXIT 2 STDERR "--refinement is bisection, edge or anisotropic, got 'red-green'" ONE_LINE_STDERR
   ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --tets 3000 --refinement red-green)
 art_expect_test(cli.render_tets_iso_nan EXIT 2 STDERR "--iso expects numbers separated by commas, got 'nan'"
   ONE_LINE_STDERR ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/x.png" --iso nan)
