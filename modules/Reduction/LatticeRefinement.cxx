@@ -118,7 +118,9 @@ ReducedMesh LatticeRefinement::RelocatedLevel()
   VertexRelocator::Relocate(moved, Volume, y, ro, Importance.get(), Prog);
   if (Prog)
   {
-    Prog->Begin("reduce", 1.0 - Reported, Reported, 1.0); // back to the reduction's stage, where it was
+    // The refit after relocation is a stage of its own, from 0%: back to "reduce 95%" after
+    // "relocate 100%" read as the reduction starting over.
+    Prog->Begin("refit", 1.0 - Reported);
   }
   LeastSquaresFit refit(Volume, Opt.Regularization, Importance.get());
   std::vector<int> every(static_cast<size_t>(moved.NumberOfTets()));

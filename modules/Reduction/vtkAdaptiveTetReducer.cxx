@@ -298,7 +298,11 @@ int vtkAdaptiveTetReducer::RequestData(
   };
   art::Progress pilot([&report, &pilot, pilotPart](double f, const std::string&) { report(pilotPart * f, pilot); });
   art::Progress progress([&report, &progress, &opt, pilotPart](double f, const std::string& stage) {
-    const double g = !opt.RelocateVertices ? f : (stage == "relocate" ? 0.5 + 0.5 * f : 0.5 * f);
+    // With relocation: reduce (to 95%) in [0, 0.475], relocate in [0.5, 0.95], the refit after it.
+    const double g = !opt.RelocateVertices ? f
+      : stage == "relocate"               ? 0.5 + 0.45 * f
+      : stage == "refit"                  ? 0.95 + 0.05 * f
+                                          : 0.5 * f;
     report(pilotPart + (1.0 - pilotPart) * g, progress);
   });
   try
