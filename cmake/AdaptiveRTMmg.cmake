@@ -20,9 +20,17 @@ if(ART_WITH_MMG AND NOT mmg_DIR AND NOT EXISTS "${_art_mmg_prefix}/lib64/cmake/m
     set(_wheel "${CMAKE_BINARY_DIR}/_deps/${_art_mmg_wheel_name}")
     if(NOT EXISTS "${_wheel}")
       message(STATUS "MMG: downloading ${_art_mmg_wheel_name}")
-      file(DOWNLOAD "${_art_mmg_wheel_url}" "${_wheel}.part" STATUS _status
-        EXPECTED_HASH SHA256=${_art_mmg_wheel_sha256} TLS_VERIFY ON)
+      # No EXPECTED_HASH: a failed download (no network, a proxy's certificate) must leave the
+      # build without MMG and say why, and EXPECTED_HASH makes any failure a configure error.
+      file(DOWNLOAD "${_art_mmg_wheel_url}" "${_wheel}.part" STATUS _status TLS_VERIFY ON)
       list(GET _status 0 _code)
+      if(_code EQUAL 0)
+        file(SHA256 "${_wheel}.part" _got)
+        if(NOT _got STREQUAL _art_mmg_wheel_sha256)
+          set(_code 1)
+          set(_status "1;SHA256 ${_got}, not the pinned ${_art_mmg_wheel_sha256}")
+        endif()
+      endif()
       if(_code EQUAL 0)
         file(RENAME "${_wheel}.part" "${_wheel}")
       else()
