@@ -48,6 +48,9 @@ class SegmentRule
 public:
   explicit SegmentRule(const TransferFunction& tf) : TF(tf) {}
   /// Composites the segment (scalar s0 -> s1 over `length` world units) behind `acc`.
+#if defined(__GNUC__)
+  __attribute__((always_inline))
+#endif
   void Integrate(double s0, double s1, double length, RayAccum& acc) const
   {
     if (length > 0.0 && !TF.Transparent(s0, s1))

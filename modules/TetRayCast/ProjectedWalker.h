@@ -1,4 +1,4 @@
-// ProjectedWalker: TetWalker's face-to-face walk (Grosso, Luerig & Ertl 1997, sec. 5) for the
+// ProjectedWalker: the face-to-face walk (FaceWalk.h; Grosso, Luerig & Ertl 1997, sec. 5) for the
 // primary rays of one camera, in the camera's projection. Rays from a common eye E have side
 // products D.((a-E) x (b-E)) = Dz za zb orient2d(a', b', p) with a' the vertex projected onto the
 // plane z = 1 of the view and p the pixel (Platis & Theoharis 2003 in screen space): with every
@@ -99,10 +99,10 @@ public:
 
   /// As TetWalker::Walk, with the same crossings up to round-off.
   template <class Visit>
-  void Walk(int t, int entryFace, FaceCrossing in, Visit&& visit, FaceCrossing& out,
-    std::uint64_t& steps, std::uint64_t& nudges, const std::array<int, 4>* links = nullptr) const
+  ART_ALWAYS_INLINE void Walk(int t, int entryFace, FaceCrossing in, Visit&& visit, FaceCrossing& out,
+    std::uint64_t& steps, std::uint64_t& nudges, const TetRecord* records = nullptr) const
   {
-    WalkFaces(M, *this, t, entryFace, in, visit, out, steps, nudges, links);
+    WalkFaces(M, *this, t, entryFace, in, visit, out, steps, nudges, records);
   }
 
   /// As TetWalker::Crosses, with the walk's 2-D products: an entry found here is the one the walk

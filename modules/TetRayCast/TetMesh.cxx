@@ -16,12 +16,44 @@
 
 namespace art
 {
+namespace
+{
+constexpr long long Grain = 1 << 14; // parallel chunks start at multiples of it: one slot each where needed
+}
+
 constexpr int TetMesh::FaceVertex[4][3];
 
 TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vector<std::array<int, 4>> tets)
   : Points(std::move(points))
   , Values(std::move(scalars))
-  , Tets(std::move(tets))
+{
+  CheckInput(tets);
+  TetRecords.resize(tets.size());
+  for (std::size_t t = 0; t < tets.size(); ++t)
+  {
+    TetRecords[t].v = tets[t];
+    TetRecords[t].link = { -1, -1, -1, -1 };
+  }
+  std::vector<std::array<int, 4>>().swap(tets);
+  if (TetRecords.size() > LocalityThreshold)
+  {
+    SortForLocality();
+  }
+  Range[0] = *std::min_element(Values.begin(), Values.end());
+  Range[1] = *std::max_element(Values.begin(), Values.end());
+  for (const Vec3& p : Points)
+  {
+    Box.Expand(p);
+  }
+  const VertexTets vt = IncidentTets();
+  const std::vector<double> volume = OrientAndInterpolate();
+  VertexGradients(vt, volume);
+  LinkFaces(vt, volume);
+  FindBoundary();
+  LinkBoundaryEdges();
+}
+
+void TetMesh::CheckInput(const std::vector<std::array<int, 4>>& tets) const
 {
   const int np = static_cast<int>(Points.size());
   if (Values.size() != Points.size())
@@ -29,13 +61,13 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
     throw Error("point scalars do not match the points (" + std::to_string(Values.size()) + " values for " +
       std::to_string(np) + " points)");
   }
-  if (Tets.empty())
+  if (tets.empty())
   {
     throw Error("mesh has no tetrahedra");
   }
-  if (Tets.size() >= (std::size_t(1) << 29))
+  if (tets.size() >= (std::size_t(1) << 29))
   {
-    throw Error("mesh has " + std::to_string(Tets.size()) + " tetrahedra; at most 2^29 are supported");
+    throw Error("mesh has " + std::to_string(tets.size()) + " tetrahedra; at most 2^29 are supported");
   }
   for (std::size_t i = 0; i < Points.size(); ++i)
   {
@@ -58,9 +90,9 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
       at + "); rendering needs finite values: replace them (e.g. ParaView's Calculator, numpy.nan_to_num) or cut "
       "those cells away (ParaView's Threshold)");
   }
-  for (std::size_t t = 0; t < Tets.size(); ++t)
+  for (std::size_t t = 0; t < tets.size(); ++t)
   {
-    for (int id : Tets[t])
+    for (int id : tets[t])
     {
       if (id < 0 || id >= np)
       {
@@ -68,46 +100,47 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
       }
     }
   }
-  if (Tets.size() > LocalityThreshold)
-  {
-    SortForLocality();
-  }
-  Range[0] = *std::min_element(Values.begin(), Values.end());
-  Range[1] = *std::max_element(Values.begin(), Values.end());
-  const std::size_t nt = Tets.size();
-  const long long grain = 1 << 14; // chunks start at multiples of it: one slot each where needed
+}
 
-  // Vertex -> incident tets in ascending order (CSR), for the vertex gradients and the face links:
-  // about 20 tets per vertex to look through instead of a sort of all 4n faces (3x faster on the
-  // CT's 4.3 M full-resolution tets, and none of the sort's 20 bytes per face).
-  std::vector<int> first(Points.size() + 1, 0), incident(4 * nt);
-  for (const auto& v : Tets)
+TetMesh::VertexTets TetMesh::IncidentTets() const
+{
+  // About 20 tets per vertex to look through, for the gradients and the face links, instead of a
+  // sort of all 4n faces (and none of the sort's 20 bytes per face).
+  VertexTets vt;
+  vt.First.assign(Points.size() + 1, 0);
+  vt.Tets.resize(4 * TetRecords.size());
+  for (const auto& r : TetRecords)
   {
-    for (int id : v)
+    for (int id : r.v)
     {
-      ++first[id + 1];
+      ++vt.First[id + 1];
     }
   }
-  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::partial_sum(vt.First.begin(), vt.First.end(), vt.First.begin());
+  std::vector<int> next(vt.First.begin(), vt.First.end() - 1);
+  for (std::size_t t = 0; t < TetRecords.size(); ++t)
   {
-    std::vector<int> next(first.begin(), first.end() - 1);
-    for (std::size_t t = 0; t < nt; ++t)
+    for (int id : TetRecords[t].v)
     {
-      for (int id : Tets[t])
-      {
-        incident[next[id]++] = static_cast<int>(t);
-      }
+      vt.Tets[next[id]++] = static_cast<int>(t);
     }
   }
+  return vt;
+}
 
+std::vector<double> TetMesh::OrientAndInterpolate()
+{
+  // Each tet positively oriented, its linear interpolant by Cramer's rule (a flat tet keeps a
+  // constant, its mean), its volume, and the longest edge of all.
+  const std::size_t nt = TetRecords.size();
   Interp.resize(nt);
   std::vector<double> volume(nt);
-  std::vector<double> longest(static_cast<std::size_t>((nt + grain - 1) / grain), 0.0);
-  ForEachRange(static_cast<long long>(nt), grain, [&](long long b, long long e, Counters&) {
+  std::vector<double> longest(static_cast<std::size_t>((nt + Grain - 1) / Grain), 0.0);
+  ForEachRange(static_cast<long long>(nt), Grain, [&](long long b, long long e, Counters&) {
     double L = 0;
     for (long long t = b; t < e; ++t)
     {
-      auto& v = Tets[t];
+      auto& v = TetRecords[t].v;
       Vec3 e1 = Points[v[1]] - Points[v[0]], e2 = Points[v[2]] - Points[v[0]], e3 = Points[v[3]] - Points[v[0]];
       double det = Dot(e1, Cross(e2, e3));
       if (det < 0)
@@ -119,7 +152,6 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
         e2 = Points[v[2]] - Points[v[0]];
         det = -det;
       }
-      // Linear interpolant by Cramer's rule; a flat tet keeps a constant (its mean).
       const double f0 = Values[v[0]];
       Vec3 g;
       if (det > 0)
@@ -139,20 +171,25 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
         }
       }
     }
-    longest[static_cast<std::size_t>(b / grain)] = L;
+    longest[static_cast<std::size_t>(b / Grain)] = L;
   });
   LongestEdge = longest.empty() ? 0.0 : *std::max_element(longest.begin(), longest.end());
+  return volume;
+}
+
+void TetMesh::VertexGradients(const VertexTets& vt, const std::vector<double>& volume)
+{
   // Volume-weighted mean of the incident tets' gradients, summed in ascending tet order.
   Gradients.assign(Points.size(), Vec3());
-  ForEachRange(static_cast<long long>(Points.size()), grain, [&](long long b, long long e, Counters&) {
+  ForEachRange(static_cast<long long>(Points.size()), Grain, [&](long long b, long long e, Counters&) {
     for (long long i = b; i < e; ++i)
     {
       Vec3 g;
       double w = 0;
-      for (int k = first[i]; k < first[i + 1]; ++k)
+      for (int k = vt.First[i]; k < vt.First[i + 1]; ++k)
       {
-        const auto& c = Interp[incident[k]];
-        const double vol = volume[incident[k]];
+        const auto& c = Interp[vt.Tets[k]];
+        const double vol = volume[vt.Tets[k]];
         g += Vec3(c[1], c[2], c[3]) * vol;
         w += vol;
       }
@@ -162,11 +199,10 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
       }
     }
   });
-  for (const Vec3& p : Points)
-  {
-    Box.Expand(p);
-  }
+}
 
+void TetMesh::LinkFaces(const VertexTets& vt, const std::vector<double>& volume)
+{
   // Face neighbours, vertex by vertex: the faces whose lowest vertex is i come from i's incident
   // tets, and equal faces among those few are the shared ones. Each face belongs to one vertex,
   // so each link is written once, from whichever thread takes that vertex.
@@ -179,17 +215,18 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
   // Links vertex i's faces; returns the first inconsistent run of equal faces (empty when none).
   auto linkFaces = [&](int i, std::vector<LocalFace>& faces) -> std::pair<int, int> {
     faces.clear();
-    for (int k = first[i]; k < first[i + 1]; ++k)
+    for (int k = vt.First[i]; k < vt.First[i + 1]; ++k)
     {
-      const int t = incident[k];
-      if (k > first[i] && incident[k - 1] == t) // a tet listed twice repeats vertex i
+      const int t = vt.Tets[k];
+      if (k > vt.First[i] && vt.Tets[k - 1] == t) // a tet listed twice repeats vertex i
       {
         continue;
       }
+      const auto& v = TetRecords[t].v;
       for (int f = 0; f < 4; ++f)
       {
         const int* fv = FaceVertex[f];
-        const int x = Tets[t][fv[0]], y = Tets[t][fv[1]], z = Tets[t][fv[2]];
+        const int x = v[fv[0]], y = v[fv[1]], z = v[fv[2]];
         if (std::min(x, std::min(y, z)) != i)
         {
           continue;
@@ -217,16 +254,15 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
       if (e - r == 2)
       {
         const int pa = faces[r].ref, pb = faces[r + 1].ref;
-        Links[pa / 4][pa % 4] = pb;
-        Links[pb / 4][pb % 4] = pa;
+        TetRecords[pa / 4].link[pa % 4] = pb;
+        TetRecords[pb / 4].link[pb % 4] = pa;
       }
       r = e;
     }
     return { -1, 0 };
   };
-  Links.assign(nt, { -1, -1, -1, -1 });
   std::atomic<bool> inconsistent{ false };
-  ForEachRange(static_cast<long long>(Points.size()), grain, [&](long long b, long long e, Counters&) {
+  ForEachRange(static_cast<long long>(Points.size()), Grain, [&](long long b, long long e, Counters&) {
     std::vector<LocalFace> faces;
     for (long long i = b; i < e; ++i)
     {
@@ -236,44 +272,51 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
       }
     }
   });
-  if (inconsistent)
+  if (!inconsistent)
   {
-    // The first inconsistency in vertex order, so the message is the same on every run.
-    std::vector<LocalFace> faces;
-    for (int i = 0; i < np; ++i)
-    {
-      const auto [r, n] = linkFaces(i, faces);
-      if (r < 0)
-      {
-        continue;
-      }
-      const int ta = faces[r].ref / 4;
-      if (n > 2)
-      {
-        throw Error("inconsistent neighbours: a face of tet " + std::to_string(ta) + " is shared by " +
-          std::to_string(n) + " tets");
-      }
-      throw Error("inconsistent neighbours: tets " + std::to_string(ta) + " and " +
-        std::to_string(faces[r + 1].ref / 4) + " lie on the same side of their shared face (overlap)");
-    }
+    return;
   }
-  for (std::size_t t = 0; t < nt; ++t)
+  // The first inconsistency in vertex order, so the message is the same on every run.
+  std::vector<LocalFace> faces;
+  for (int i = 0; i < static_cast<int>(Points.size()); ++i)
+  {
+    const auto [r, n] = linkFaces(i, faces);
+    if (r < 0)
+    {
+      continue;
+    }
+    const int ta = faces[r].ref / 4;
+    if (n > 2)
+    {
+      throw Error("inconsistent neighbours: a face of tet " + std::to_string(ta) + " is shared by " +
+        std::to_string(n) + " tets");
+    }
+    throw Error("inconsistent neighbours: tets " + std::to_string(ta) + " and " +
+      std::to_string(faces[r + 1].ref / 4) + " lie on the same side of their shared face (overlap)");
+  }
+}
+
+void TetMesh::FindBoundary()
+{
+  for (std::size_t t = 0; t < TetRecords.size(); ++t)
   {
     for (int f = 0; f < 4; ++f)
     {
-      if (Links[t][f] < 0)
+      if (TetRecords[t].link[f] < 0)
       {
         Boundary.push_back({ static_cast<int>(t), f });
       }
     }
   }
-
   BPlanes.reserve(Boundary.size());
   for (const auto& b : Boundary)
   {
     BPlanes.push_back(FacePlane(b[0], b[1]));
   }
+}
 
+void TetMesh::LinkBoundaryEdges()
+{
   // Boundary edge adjacency, and convexity: every boundary dihedral convex, one boundary shell.
   struct EdgeKey
   {
@@ -284,7 +327,7 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
   edges.reserve(3 * Boundary.size());
   for (std::size_t b = 0; b < Boundary.size(); ++b)
   {
-    const auto& v = Tets[Boundary[b][0]];
+    const auto& v = TetRecords[Boundary[b][0]].v;
     const auto& fv = FaceVertex[Boundary[b][1]];
     for (int k = 0; k < 3; ++k)
     {
@@ -313,7 +356,7 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
     BoundaryAdj[q.face][q.k] = p.face;
     // q's third vertex must not lie in front of p's plane.
     const auto& qb = Boundary[q.face];
-    const int third = Tets[qb[0]][FaceVertex[qb[1]][(q.k + 2) % 3]];
+    const int third = TetRecords[qb[0]].v[FaceVertex[qb[1]][(q.k + 2) % 3]];
     const Plane& pl = BPlanes[p.face];
     if (Dot(pl.n, Points[third]) - pl.d > eps)
     {
@@ -321,28 +364,30 @@ TetMesh::TetMesh(std::vector<Vec3> points, std::vector<double> scalars, std::vec
     }
     i = j;
   }
-  if (Convex && !Boundary.empty())
+  if (!Convex || Boundary.empty())
   {
-    std::vector<char> seen(Boundary.size(), 0);
-    std::vector<int> stack{ 0 };
-    seen[0] = 1;
-    std::size_t count = 1;
-    while (!stack.empty())
+    return;
+  }
+  // One shell: every boundary face reached from the first across edges.
+  std::vector<char> seen(Boundary.size(), 0);
+  std::vector<int> stack{ 0 };
+  seen[0] = 1;
+  std::size_t count = 1;
+  while (!stack.empty())
+  {
+    const int b = stack.back();
+    stack.pop_back();
+    for (int n : BoundaryAdj[b])
     {
-      const int b = stack.back();
-      stack.pop_back();
-      for (int n : BoundaryAdj[b])
+      if (n >= 0 && !seen[n])
       {
-        if (n >= 0 && !seen[n])
-        {
-          seen[n] = 1;
-          ++count;
-          stack.push_back(n);
-        }
+        seen[n] = 1;
+        ++count;
+        stack.push_back(n);
       }
     }
-    Convex = count == Boundary.size();
   }
+  Convex = count == Boundary.size();
 }
 
 void TetMesh::SortForLocality()
@@ -372,10 +417,10 @@ void TetMesh::SortForLocality()
   }
   Points.swap(pts);
   Values.swap(val);
-  order.resize(Tets.size());
-  for (std::size_t t = 0; t < Tets.size(); ++t)
+  order.resize(TetRecords.size());
+  for (std::size_t t = 0; t < TetRecords.size(); ++t)
   {
-    auto& v = Tets[t];
+    auto& v = TetRecords[t].v;
     for (int& id : v)
     {
       id = newId[id];
@@ -383,17 +428,17 @@ void TetMesh::SortForLocality()
     order[t] = { code((Points[v[0]] + Points[v[1]] + Points[v[2]] + Points[v[3]]) * 0.25), static_cast<int>(t) };
   }
   vtkSMPTools::Sort(order.begin(), order.end());
-  std::vector<std::array<int, 4>> tets(Tets.size());
+  std::vector<TetRecord> tets(TetRecords.size());
   for (std::size_t t = 0; t < order.size(); ++t)
   {
-    tets[t] = Tets[order[t].second];
+    tets[t] = TetRecords[order[t].second];
   }
-  Tets.swap(tets);
+  TetRecords.swap(tets);
 }
 
 void TetMesh::Barycentric(std::size_t t, const Vec3& p, double w[4]) const
 {
-  const auto& v = Tets[t];
+  const auto& v = TetRecords[t].v;
   const Vec3 &a = Points[v[0]], e1 = Points[v[1]] - a, e2 = Points[v[2]] - a, e3 = Points[v[3]] - a, x = p - a;
   const double vol = Dot(e1, Cross(e2, e3));
   if (!(std::fabs(vol) > 0))
@@ -432,14 +477,14 @@ int TetMesh::Locate(const Vec3& p) const
     {
       return t;
     }
-    const int next = LinkTet(Links[t][k]);
+    const int next = LinkTet(TetRecords[t].link[k]);
     if (next < 0)
     {
       break;
     }
     t = next;
   }
-  for (std::size_t u = 0; u < Tets.size(); ++u)
+  for (std::size_t u = 0; u < TetRecords.size(); ++u)
   {
     if (inside(u, nullptr))
     {
@@ -451,7 +496,7 @@ int TetMesh::Locate(const Vec3& p) const
 
 TetMesh::Plane TetMesh::FacePlane(std::size_t t, int f) const
 {
-  const auto& v = Tets[t];
+  const auto& v = TetRecords[t].v;
   const Vec3& p0 = Points[v[FaceVertex[f][0]]];
   const Vec3 n = Normalize(Cross(Points[v[FaceVertex[f][1]]] - p0, Points[v[FaceVertex[f][2]]] - p0));
   return { n, Dot(n, p0) };

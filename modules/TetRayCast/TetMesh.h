@@ -1,7 +1,9 @@
 // TetMesh: the compact arrays the cell-by-cell ray caster walks (Grosso, Luerig & Ertl 1997, sec. 5):
-// positively oriented tets, face neighbours (-1 on the boundary), outward face planes, each tet's
-// linear interpolant f = a + g.x, volume-weighted vertex gradients, and the boundary faces with
-// their edge adjacency (for the entrance walk). Face i of a tet is the one opposite vertex i.
+// positively oriented tets with their face links in one 32-byte record each (a walk step reads one
+// record), each tet's linear interpolant f = a + g.x, volume-weighted vertex gradients, and the
+// boundary faces with their planes and edge adjacency (for the entrance walk). Face i of a tet is
+// the one opposite vertex i. Large meshes are laid out in Z-order, so that neighbours in space are
+// neighbours in memory.
 #ifndef art_TetMesh_h
 #define art_TetMesh_h
 
@@ -17,6 +19,14 @@ class vtkUnstructuredGrid;
 
 namespace art
 {
+/// A tet as the walk reads it: its four vertex ids and its four face links (TetMesh::Link), in
+/// one record aligned to half a cache line.
+struct alignas(32) TetRecord
+{
+  std::array<int, 4> v;
+  std::array<int, 4> link;
+};
+
 class ADAPTIVERTTETRAYCAST_EXPORT TetMesh
 {
 public:
@@ -52,24 +62,25 @@ public:
   static TetMesh FromVTK(vtkUnstructuredGrid* grid, const std::string& array = {},
     std::string* note = nullptr, const std::string& file = {});
 
-  std::size_t NumberOfTets() const { return Tets.size(); }
+  std::size_t NumberOfTets() const { return TetRecords.size(); }
   std::size_t NumberOfPoints() const { return Points.size(); }
 
   const std::vector<Vec3>& PointsArray() const { return Points; }
   const std::vector<double>& Scalars() const { return Values; }
-  const std::array<int, 4>& Tet(std::size_t t) const { return Tets[t]; }
+  const std::array<int, 4>& Tet(std::size_t t) const { return TetRecords[t].v; }
   /// The tets across faces 0..3 of tet t (-1 on the boundary).
   std::array<int, 4> Neighbours(std::size_t t) const
   {
-    const auto& l = Links[t];
+    const auto& l = TetRecords[t].link;
     return { LinkTet(l[0]), LinkTet(l[1]), LinkTet(l[2]), LinkTet(l[3]) };
   }
   /// Face f of tet t as a link: 4 * neighbour + the neighbour's face index of the shared face, or
   /// -1 on the boundary. The walker enters the neighbour knowing which of its faces it came through.
-  int Link(std::size_t t, int f) const { return Links[t][f]; }
-  const std::array<int, 4>& LinkRow(std::size_t t) const { return Links[t]; }
-  /// Every tet's row of links (the walk's default table).
-  const std::array<int, 4>* LinkRows() const { return Links.data(); }
+  int Link(std::size_t t, int f) const { return TetRecords[t].link[f]; }
+  const std::array<int, 4>& LinkRow(std::size_t t) const { return TetRecords[t].link; }
+  /// Every tet's record (the walk's default table).
+  const TetRecord* Records() const { return TetRecords.data(); }
+  const TetRecord& Record(std::size_t t) const { return TetRecords[t]; }
   static int LinkTet(int link) { return link < 0 ? -1 : link >> 2; }
   static int LinkFace(int link) { return link & 3; }
   /// Outward plane of face f of tet t. Computed from the vertices when asked: the Pluecker walker
@@ -111,11 +122,23 @@ public:
   static constexpr std::size_t LocalityThreshold = 65536;
 
 private:
+  /// Vertex -> incident tets in ascending tet order (CSR: Tets[First[i] .. First[i+1])).
+  struct VertexTets
+  {
+    std::vector<int> First, Tets;
+  };
+  void CheckInput(const std::vector<std::array<int, 4>>& tets) const;
   void SortForLocality();
+  VertexTets IncidentTets() const;
+  std::vector<double> OrientAndInterpolate();
+  void VertexGradients(const VertexTets& vt, const std::vector<double>& volume);
+  void LinkFaces(const VertexTets& vt, const std::vector<double>& volume);
+  void FindBoundary();
+  void LinkBoundaryEdges();
 
   std::vector<Vec3> Points;
   std::vector<double> Values;
-  std::vector<std::array<int, 4>> Tets, Links;
+  std::vector<TetRecord> TetRecords;
   std::vector<Plane> BPlanes;
   std::vector<std::array<double, 4>> Interp;
   std::vector<Vec3> Gradients;

@@ -39,7 +39,7 @@ struct TetRayCaster::Impl
     // Skipping empty space, the entries are the shown region's faces and the walk stops where
     // the region does.
     const auto& faces = region ? rc.Shown.faces : M.BoundaryFaces();
-    const std::array<int, 4>* links = region ? rc.Shown.links.data() : M.LinkRows();
+    const TetRecord* records = region ? rc.Shown.records.data() : M.Records();
     const RenderSettings& S = rc.S;
     const bool mip = S.mode == RenderSettings::Mode::MaxIntensity;
     const double dirLen = Length(r.dir);
@@ -169,10 +169,10 @@ struct TetRayCaster::Impl
         ++res.pieces;
         ++c.tetsCrossed;
         FaceCrossing out = ex;
-        const int link = links[start][f];
+        const int link = records[start].link[f];
         if (visit(start, in, ex) && link >= 0)
         {
-          walker.Walk(TetMesh::LinkTet(link), TetMesh::LinkFace(link), ex, visit, out, c.tetsCrossed, nudges, links);
+          walker.Walk(TetMesh::LinkTet(link), TetMesh::LinkFace(link), ex, visit, out, c.tetsCrossed, nudges, records);
         }
         tDone = out.t;
       }
@@ -200,7 +200,7 @@ struct TetRayCaster::Impl
       ++res.pieces;
       const auto& bf = faces[e.face];
       FaceCrossing out;
-      walker.Walk(bf[0], bf[1], e.x, visit, out, c.tetsCrossed, nudges, links);
+      walker.Walk(bf[0], bf[1], e.x, visit, out, c.tetsCrossed, nudges, records);
       tDone = out.t;
     }
     if (mip)

@@ -124,13 +124,13 @@ private:
   RenderSettings S;
   std::unique_ptr<const Accelerator> Boundary; ///< boundary triangles of a non-convex mesh
   Vec3 BoundaryOrigin;                          ///< where Boundary's coordinates are taken from
-  /// Empty-space skipping (RenderSettings::skipEmpty): which tets can show, the links with those
+  /// Empty-space skipping (RenderSettings::skipEmpty): which tets can show, the records with links
   /// into the others cut, and the faces through which rays enter the shown region.
   struct Region
   {
     bool on = false;
     std::vector<char> shown;
-    std::vector<std::array<int, 4>> links;
+    std::vector<TetRecord> records; ///< the mesh's records, links into the others cut
     std::vector<std::array<int, 2>> faces;
     std::vector<double> key; ///< what it was built for: opacity nodes and iso values
     bool built = false;

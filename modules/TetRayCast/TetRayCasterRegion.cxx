@@ -86,7 +86,7 @@ void TetRayCaster::BuildRegion()
   }
   // The region's links and boundary faces, in parallel chunks whose faces join in chunk order
   // (the same list for any thread count).
-  Shown.links.resize(n);
+  Shown.records.resize(n);
   constexpr long long grain = 16384;
   const long long chunks = (static_cast<long long>(n) + grain - 1) / grain;
   std::vector<std::vector<std::array<int, 2>>> faces(static_cast<std::size_t>(chunks));
@@ -96,14 +96,14 @@ void TetRayCaster::BuildRegion()
       const std::size_t b = static_cast<std::size_t>(c * grain), e = std::min<std::size_t>(n, b + grain);
       for (std::size_t t = b; t < e; ++t)
       {
-        Shown.links[t] = M.LinkRows()[t];
+        Shown.records[t] = M.Record(t);
         if (!Shown.shown[t])
         {
           continue;
         }
         for (int f = 0; f < 4; ++f)
         {
-          int& l = Shown.links[t][f];
+          int& l = Shown.records[t].link[f];
           if (l < 0 || !Shown.shown[TetMesh::LinkTet(l)])
           {
             l = -1;

@@ -59,7 +59,7 @@ std::vector<double> Crossings(const TetMesh& m, const W& w, const Entry& e)
       x.insert(x.end(), { double(t), a.t, a.s, b.t, b.s });
       return true;
     },
-    out, steps, nudges, m.LinkRows());
+    out, steps, nudges, m.Records());
   x.insert(x.end(), { out.t, out.s, double(nudges) });
   return x;
 }
