@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 // The integrator's cost is chains of dependent multiply-adds (series and quadrature): where the
-// CPU has fused multiply-add its entry points get a clone that uses it (1.3-1.8x a piece), chosen
-// at load time. Only here: the walkers need unfused products (see CMakeLists.txt).
+// CPU has fused multiply-add its entry points get a clone that uses it, chosen at load time.
+// Only here: the walkers need unfused products (see CMakeLists.txt).
 #if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
 #define ART_FMA_CLONES __attribute__((target_clones("fma", "default")))
 #else
@@ -175,7 +177,7 @@ ART_INLINE double ErfcxAt(double x)
   return ErfcxTable()(x);
 }
 
-ART_INLINE void LinearPiece(const double c0[3], const double c1[3], double tau0, double tau1, double l,
+ART_INLINE void PreciseLinearPiece(const double c0[3], const double c1[3], double tau0, double tau1, double l,
   double C[3], double& T)
 {
   // Optical depth E(x) = A x + B x^2 over x in [0, 1] (x = s / l); E' = tau(x) l >= 0.
@@ -235,29 +237,28 @@ ART_INLINE void LinearPiece(const double c0[3], const double c1[3], double tau0,
     C[k] = std::max(0.0, c0[k] - c1[k] * T + (c1[k] - c0[k]) * J);
   }
 }
-} // namespace
-
-double Dawson(double x)
+ART_INLINE void FastLinearPiece(const double c0[3], const double c1[3], double tau0, double tau1, double l,
+  double C[3], double& T)
 {
-  return DawsonAt(x);
+  const double A = tau0 * l, B = 0.5 * (tau1 - tau0) * l;
+  double J;
+  if (!(A + B > 0.0) || !lobatto::Piece(A, B, std::max(tau0, tau1) * l, J, T))
+  {
+    PreciseLinearPiece(c0, c1, tau0, tau1, l, C, T);
+    return;
+  }
+  const double a = 1.0 - J, b = (1.0 - T) - a;
+  for (int k = 0; k < 3; ++k)
+  {
+    C[k] = std::max(0.0, c0[k] * a + c1[k] * b);
+  }
 }
 
-double Erfcx(double x)
+// The exact rule over one segment: split at the control points between s0 and s1.
+template <bool Precise>
+ART_INLINE void SplitSpan(const TransferFunction& TF, double s0, double s1, int i0, int i1, bool carried,
+  double length, RayAccum& acc)
 {
-  return ErfcxAt(x);
-}
-
-ART_FMA_CLONES void IntegrateLinearPiece(const double c0[3], const double c1[3], double tau0, double tau1,
-  double l, double C[3], double& T)
-{
-  LinearPiece(c0, c1, tau0, tau1, l, C, T);
-}
-
-ART_FMA_CLONES void ExactIntegrator::IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const
-{
-  // A segment usually starts where the last one ended: its transfer-function values carry over.
-  const bool carried = s0 == acc.lastS;
-  const int i0 = carried ? acc.lastI : TF.Locate(s0), i1 = s1 == s0 ? i0 : TF.Locate(s1);
   const auto& n = TF.Nodes();
   double ca[3], ta, cb[3], tb, C[3], T;
   if (carried)
@@ -268,12 +269,18 @@ ART_FMA_CLONES void ExactIntegrator::IntegrateSpan(double s0, double s1, double 
   {
     TF.EvaluateIn(i0, s0, ca, ta);
   }
-  auto composite = [&](double l) ART_ALWAYS_INLINE { // inlined, so each clone has its own
-    // A piece between two transparent control points adds nothing (a third of the pieces on the
-    // CT head's skin-and-bone function).
+  auto composite = [&](double l) ART_ALWAYS_INLINE {
+    // A piece between two transparent control points adds nothing.
     if (ta > 0.0 || tb > 0.0)
     {
-      LinearPiece(ca, cb, ta, tb, l, C, T);
+      if constexpr (Precise)
+      {
+        PreciseLinearPiece(ca, cb, ta, tb, l, C, T);
+      }
+      else
+      {
+        FastLinearPiece(ca, cb, ta, tb, l, C, T);
+      }
       for (int k = 0; k < 3; ++k)
       {
         acc.rgb[k] += acc.T * C[k];
@@ -311,22 +318,43 @@ ART_FMA_CLONES void ExactIntegrator::IntegrateSpan(double s0, double s1, double 
   }
   TF.EvaluateIn(i1, s1, cb, tb);
   composite(ds == 0.0 ? length : length * (s1 - sa) / ds);
-  acc.lastS = s1;
-  acc.lastI = i1;
+  acc.lastS = s1, acc.lastI = i1, acc.lastKnown = true;
   acc.lastRgb[0] = ca[0], acc.lastRgb[1] = ca[1], acc.lastRgb[2] = ca[2], acc.lastTau = ta;
 }
+} // namespace
 
-void TrapezoidRule::IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const
+ART_FMA_CLONES void ExactIntegrator::Span(double s0, double s1, int i0, int i1, bool carried, double length,
+  RayAccum& acc) const
 {
-  const int i0 = TF.Locate(s0), i1 = s1 == s0 ? i0 : TF.Locate(s1);
-  double c0[3], t0, c1[3], t1;
-  TF.EvaluateIn(i0, s0, c0, t0);
-  TF.EvaluateIn(i1, s1, c1, t1);
-  const double alpha = -std::expm1(-0.5 * length * (t0 + t1));
-  for (int k = 0; k < 3; ++k)
+  if (Exact)
   {
-    acc.rgb[k] += acc.T * alpha * 0.5 * (c0[k] + c1[k]);
+    SplitSpan<true>(TF, s0, s1, i0, i1, carried, length, acc);
   }
-  acc.T *= 1.0 - alpha;
+  else
+  {
+    SplitSpan<false>(TF, s0, s1, i0, i1, carried, length, acc);
+  }
+}
+
+void IntegrateLinearPieceFast(const double c0[3], const double c1[3], double tau0, double tau1, double l,
+  double C[3], double& T)
+{
+  FastLinearPiece(c0, c1, tau0, tau1, l, C, T);
+}
+
+double Dawson(double x)
+{
+  return DawsonAt(x);
+}
+
+double Erfcx(double x)
+{
+  return ErfcxAt(x);
+}
+
+ART_FMA_CLONES void IntegrateLinearPiece(const double c0[3], const double c1[3], double tau0, double tau1,
+  double l, double C[3], double& T)
+{
+  PreciseLinearPiece(c0, c1, tau0, tau1, l, C, T);
 }
 } // namespace art

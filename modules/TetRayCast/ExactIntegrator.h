@@ -1,88 +1,97 @@
-// ExactIntegrator: emission-absorption along one straight segment on which the scalar is linear
-// (inside a tetrahedron). The segment is split at the transfer function's control points; on each
-// piece colour c and extinction tau are linear in distance, and
+// ExactIntegrator: the exact segment rule. Emission-absorption along one straight segment on which
+// the scalar is linear (inside a tetrahedron): the segment is split at the transfer function's
+// control points; on each piece colour c and extinction tau are linear in distance, and
 //   C = int_0^l c(s) tau(s) exp(-int_0^s tau) ds = c0 - c1 T + (c1 - c0)/l int_0^l exp(-E(s)) ds
 // (integration by parts; Williams & Max 1992 give the same integral through erf). The remaining
-// integral of exp(-quadratic) is taken in closed form for thick pieces (erfcx for rising, Dawson's
-// integral for falling extinction) and by Gauss-Legendre in an expm1 form for thin ones, so it is
-// accurate to round-off for very thin and very thick cells alike (no table over the transfer
-// function, unlike VTK's pre-integration). TrapezoidRule is the seed paper's rule
-// (Grosso, Luerig & Ertl 1997): transfer function sampled at the two ends only.
+// integral J of exp(-quadratic) is smooth: Gauss-Lobatto quadrature (LobattoPiece.h) gives it
+// and the piece's transmittance within 2.4e-9 (absolute) up to a largest optical slope of 6;
+// thicker pieces take the closed form (erfcx for rising, Dawson's integral for falling
+// extinction). No table over the transfer function, unlike VTK's pre-integration.
+// IntegrateLinearPiece is the same piece to round-off relative to what it emits, for thin and
+// thick pieces alike (series and quadrature in expm1 form): the rule of ExactIntegrator::Precise.
 #ifndef art_ExactIntegrator_h
 #define art_ExactIntegrator_h
 
 #include "AdaptiveRTTetRayCastModule.h"
-#include "TransferFunction.h"
-
-#include <limits>
+#include "LobattoPiece.h"
+#include "SegmentRule.h"
+#include "TrapezoidRule.h"
 
 namespace art
 {
-/// Front-to-back accumulation along one ray: premultiplied colour and transmittance.
-struct RayAccum
-{
-  double rgb[3] = { 0, 0, 0 };
-  double T = 1.0;
-  double Alpha() const { return 1.0 - T; }
-  // The transfer function at the last segment's end: the next segment starts there.
-  double lastS = std::numeric_limits<double>::quiet_NaN();
-  double lastRgb[3] = { 0, 0, 0 };
-  double lastTau = 0;
-  int lastI = -1; ///< its transfer-function interval (TransferFunction::Locate)
-};
-
 /// Dawson's integral F(x) = exp(-x^2) int_0^x exp(t^2) dt, to about 1e-15 relative.
 ADAPTIVERTTETRAYCAST_EXPORT double Dawson(double x);
 /// The scaled complementary error function exp(x^2) erfc(x) for x >= 0, to about 1e-15 relative.
 ADAPTIVERTTETRAYCAST_EXPORT double Erfcx(double x);
 
-/// One piece with linear colour and extinction: premultiplied colour C and transmittance T.
+/// One piece with linear colour and extinction, to round-off relative to what it emits:
+/// premultiplied colour C and transmittance T.
 ADAPTIVERTTETRAYCAST_EXPORT void IntegrateLinearPiece(const double c0[3], const double c1[3],
   double tau0, double tau1, double length, double C[3], double& T);
 
-/// What both segment rules share: the transparency test inline (most segments of a typical
-/// transfer function end at it), the integration out of line in Rule::IntegrateSpan.
-template <class Rule>
-class SegmentRule
-{
-public:
-  explicit SegmentRule(const TransferFunction& tf) : TF(tf) {}
-  /// Composites the segment (scalar s0 -> s1 over `length` world units) behind `acc`.
-#if defined(__GNUC__)
-  __attribute__((always_inline))
-#endif
-  void Integrate(double s0, double s1, double length, RayAccum& acc) const
-  {
-    if (length > 0.0 && !TF.Transparent(s0, s1))
-    {
-      static_cast<const Rule&>(*this).IntegrateSpan(s0, s1, length, acc);
-    }
-  }
+/// The rule's piece (LobattoPiece.h, the closed form past its range): within 2.4e-9 of
+/// IntegrateLinearPiece in C and T, absolute.
+ADAPTIVERTTETRAYCAST_EXPORT void IntegrateLinearPieceFast(const double c0[3], const double c1[3],
+  double tau0, double tau1, double length, double C[3], double& T);
 
-protected:
-  const TransferFunction& TF;
-};
-
-/// Split at the transfer function's control points, each piece in closed form (IntegrateLinearPiece).
+/// Split at the transfer function's control points, each piece by LobattoPiece (the closed form
+/// past its range). A segment inside one interval that carries on from the last is integrated
+/// inline; the others go out of line.
 class ADAPTIVERTTETRAYCAST_EXPORT ExactIntegrator : public SegmentRule<ExactIntegrator>
 {
 public:
-  using SegmentRule::SegmentRule;
+  explicit ExactIntegrator(const TransferFunction& tf) : SegmentRule(tf) {}
+  /// The same rule with every piece to round-off (IntegrateLinearPiece): for references.
+  static ExactIntegrator Precise(const TransferFunction& tf)
+  {
+    ExactIntegrator e(tf);
+    e.Exact = true;
+    return e;
+  }
 
 private:
   friend class SegmentRule<ExactIntegrator>;
-  void IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const;
-};
+#if defined(__GNUC__)
+  __attribute__((always_inline))
+#endif
+  void IntegrateSpan(double s0, double s1, int i0, int i1, bool carried, double length, RayAccum& acc) const
+  {
+    if (!(i0 == i1 && carried && !Exact && OnePiece(s1, i1, length, acc)))
+    {
+      Span(s0, s1, i0, i1, carried, length, acc);
+    }
+  }
+#if defined(__GNUC__)
+  __attribute__((always_inline))
+#endif
+  bool OnePiece(double s1, int i1, double l, RayAccum& acc) const
+  {
+    double cb[3], tb;
+    TF.EvaluateIn(i1, s1, cb, tb);
+    const double* ca = acc.lastRgb;
+    const double ta = acc.lastTau;
+    const double A = ta * l, B = 0.5 * (tb - ta) * l;
+    double J, T;
+    if (!(A + B > 0.0) || !lobatto::Piece(A, B, (ta > tb ? ta : tb) * l, J, T))
+    {
+      return false;
+    }
+    // C = c0 (1 - J) + c1 (J - T): absolute errors of 1e-16 where a thin piece emits little.
+    const double a = 1.0 - J, b = (1.0 - T) - a;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double C = ca[k] * a + cb[k] * b;
+      acc.rgb[k] += acc.T * (C > 0.0 ? C : 0.0);
+    }
+    acc.T *= T;
+    acc.lastS = s1, acc.lastI = i1, acc.lastKnown = true;
+    acc.lastRgb[0] = cb[0], acc.lastRgb[1] = cb[1], acc.lastRgb[2] = cb[2], acc.lastTau = tb;
+    return true;
+  }
+  /// The general case, out of line: split at the control points.
+  void Span(double s0, double s1, int i0, int i1, bool carried, double length, RayAccum& acc) const;
 
-/// The seed paper's rule: alpha = 1 - exp(-l (tau0 + tau1) / 2), colour (c0 + c1) / 2 premultiplied by alpha.
-class ADAPTIVERTTETRAYCAST_EXPORT TrapezoidRule : public SegmentRule<TrapezoidRule>
-{
-public:
-  using SegmentRule::SegmentRule;
-
-private:
-  friend class SegmentRule<TrapezoidRule>;
-  void IntegrateSpan(double s0, double s1, double length, RayAccum& acc) const;
+  bool Exact = false;
 };
 } // namespace art
 

@@ -7,6 +7,7 @@
 #include "ParallelTiles.h"
 #include "Progress.h"
 #include "ProjectedWalker.h"
+#include "SegmentCompositor.h"
 #include "TetWalker.h"
 #include "Accelerator.h"
 #include "TriangleStore.h"
@@ -28,160 +29,81 @@ namespace art
 {
 struct TetRayCaster::Impl
 {
-  // Integrates one ray over every piece of the mesh it passes through, front to back. w tests
-  // faces (the start tet's exit); walker walks (w itself, or a ProjectedWalker for the same ray).
-  template <class Rule, class Walker>
-  static void Trace(const TetRayCaster& rc, const Rule& rule, const TetWalker& w, const Walker& walker,
-    const Ray& r, int start, EntryCursor& entries, RayResult& res, Counters& c,
-    std::uint64_t& nudges, bool region = false, double from = -std::numeric_limits<double>::infinity())
+  /// Integrates one ray over every piece of the mesh it passes through, front to back. w tests
+  /// faces (the start tet's exit); walker walks (w itself, or a ProjectedWalker for the same ray).
+  /// With `region`, the entries are the shown region's faces and the walk stops where it does.
+  template <class Rule, CompositeMode Mode, class Walker>
+  static void TraceRay(const TetRayCaster& rc, const Rule& rule, const TetWalker& w, const Walker& walker,
+    const Ray& r, int start, EntryCursor& entries, RayResult& res, Counters& c, std::uint64_t& nudges,
+    bool region, double from)
   {
-    const TetMesh& M = rc.M;
-    // Skipping empty space, the entries are the shown region's faces and the walk stops where
-    // the region does.
-    const auto& faces = region ? rc.Shown.faces : M.BoundaryFaces();
-    const TetRecord* records = region ? rc.Shown.records.data() : M.Records();
-    const RenderSettings& S = rc.S;
-    const bool mip = S.mode == RenderSettings::Mode::MaxIntensity;
-    const double dirLen = Length(r.dir);
-    const double tMargin = 1e-9 * M.Bounds().Diagonal() / dirLen;
-    const Vec3 view = r.dir / dirLen;
-    // Per-ray constants in locals: read through references the compiler reloads them every tet,
-    // as the walk's stores of doubles might alias them.
-    const double tmax = r.tmax, ert = S.earlyTermination;
-    const std::size_t isoCount = S.isos.size();
-    RayAccum acc;
+    const TetRecord* records = region ? rc.Shown.records.data() : rc.M.Records();
+    SegmentCompositor<Rule, Mode> visit(rc.M, rc.S, rule, r, from, res);
     double tDone = -1e300;
-    bool stop = false;
-    double fr[8];
-    int fi[8];
-    // Inlined into the walk by force: GCC otherwise calls it once per tet.
-    auto visit = [&](int t, const FaceCrossing& enter, const FaceCrossing& whole) ART_ALWAYS_INLINE {
-      // A ray traced from before its origin (`from`) adds nothing before it: the segment is cut
-      // there, as at the far end below.
-      FaceCrossing in = enter;
-      if (__builtin_expect(in.t < from, 0))
-      {
-        if (whole.t <= from)
-        {
-          return true;
-        }
-        in.s += (from - in.t) / (whole.t - in.t) * (whole.s - in.s);
-        in.t = from;
-      }
-      // The ray ends inside this tet (at opaque geometry in front of the exit): the segment is
-      // cut there, the scalar interpolated linearly along it, and the walk stops.
-      const bool ends = whole.t > tmax;
-      FaceCrossing ex = whole;
-      if (ends)
-      {
-        const double f = whole.t > in.t ? std::max(0.0, (tmax - in.t) / (whole.t - in.t)) : 0.0;
-        ex.t = std::max(in.t, tmax);
-        ex.s = in.s + f * (whole.s - in.s);
-        stop = true;
-      }
-      if (mip)
-      {
-        res.maxScalar = std::max(res.maxScalar, std::max(in.s, ex.s));
-        return !ends;
-      }
-      const double len = (ex.t - in.t) * dirLen;
-      double fa = 0.0, sa = in.s;
-      // Iso crossings on this segment, half-open so a crossing at a shared face counts once.
-      int n = 0;
-      for (std::size_t k = 0; k < isoCount && n < 8; ++k)
-      {
-        const double v = S.isos[k].value;
-        if ((in.s < v) != (ex.s < v))
-        {
-          fr[n] = (v - in.s) / (ex.s - in.s);
-          fi[n++] = static_cast<int>(k);
-        }
-      }
-      for (int a = 1; a < n; ++a)
-      {
-        for (int b = a; b > 0 && fr[b] < fr[b - 1]; --b)
-        {
-          std::swap(fr[b], fr[b - 1]);
-          std::swap(fi[b], fi[b - 1]);
-        }
-      }
-      for (int k = 0; k < n; ++k)
-      {
-        const IsoSurface& iso = S.isos[fi[k]];
-        rule.Integrate(sa, iso.value, len * (fr[k] - fa), acc);
-        fa = fr[k];
-        sa = iso.value;
-        // Gouraud-style normal: vertex gradients interpolated at the hit point.
-        const double tHit = in.t + fa * (ex.t - in.t);
-        double bw[4];
-        M.Barycentric(t, r.org + r.dir * tHit, bw);
-        const auto& tv = M.Tet(t);
-        Vec3 g;
-        for (int i = 0; i < 4; ++i)
-        {
-          g += M.VertexGradient(tv[i]) * bw[i];
-        }
-        const double shade = S.ambient + S.diffuse * std::fabs(Dot(Normalize(g), view));
-        const double a = iso.opacity;
-        for (int ch = 0; ch < 3; ++ch)
-        {
-          acc.rgb[ch] += acc.T * a * shade * iso.rgb[ch];
-        }
-        acc.T *= 1.0 - a;
-        if (res.firstIso < 0)
-        {
-          res.firstIso = tHit;
-        }
-      }
-      rule.Integrate(sa, ex.s, len * (1.0 - fa), acc);
-      if (ends || acc.Alpha() >= ert)
-      {
-        stop = true;
-        return false;
-      }
-      return true;
-    };
     if (start >= 0 && region && !rc.Shown.shown[start])
     {
       start = -1; // the eye's tet shows nothing: the region's entries take over
     }
     if (start >= 0)
     {
-      // The ray starts inside tet `start` (a camera inside the mesh): from its origin to the face
-      // it leaves through, then on through the neighbours like any other piece.
-      FaceCrossing in, ex;
-      in.t = r.tmin;
-      in.s = M.Evaluate(start, r.At(r.tmin));
-      // An origin on a face of its tet (an eye at round coordinates in a regular grid) leaves
-      // through that face at t ~ tmin, a few ulps either side: a crossing within the margin is
-      // the exit, at tmin, not a face behind the ray.
-      int f = -1;
-      for (int k = 0; k < 4 && f < 0; ++k)
+      tDone = TraceFromEye(rc, w, walker, r, start, records, visit, res, c, nudges);
+    }
+    if (!visit.Stopped())
+    {
+      TracePieces(rc, walker, r, tDone, region, records, entries, visit, res, c, nudges);
+    }
+    FinishRay<Mode>(rc.S, visit.Accumulated(), res);
+  }
+
+  /// The ray starts inside tet `start` (a camera inside the mesh): from its origin to the face it
+  /// leaves through, then on through the neighbours like any other piece. Returns the exit's t
+  /// (-1e300 when the ray could not be placed: the boundary entries take over).
+  template <class Walker, class Visit>
+  static double TraceFromEye(const TetRayCaster& rc, const TetWalker& w, const Walker& walker, const Ray& r,
+    int start, const TetRecord* records, Visit& visit, RayResult& res, Counters& c, std::uint64_t& nudges)
+  {
+    const TetMesh& M = rc.M;
+    FaceCrossing in, ex;
+    in.t = r.tmin;
+    in.s = M.Evaluate(start, r.At(r.tmin));
+    // An origin on a face of its tet (an eye at round coordinates in a regular grid) leaves
+    // through that face at t ~ tmin, a few ulps either side: a crossing within the margin is the
+    // exit, at tmin, not a face behind the ray.
+    const double tMargin = 1e-9 * M.Bounds().Diagonal() / Length(r.dir);
+    int f = -1;
+    for (int k = 0; k < 4 && f < 0; ++k)
+    {
+      if (w.Crosses(start, k, +1, ex) && ex.t >= in.t - tMargin)
       {
-        if (w.Crosses(start, k, +1, ex) && ex.t >= in.t - tMargin)
-        {
-          f = k;
-          ex.t = std::max(ex.t, in.t);
-        }
-      }
-      if (f >= 0)
-      {
-        ++res.pieces;
-        ++c.tetsCrossed;
-        FaceCrossing out = ex;
-        const int link = records[start].link[f];
-        if (visit(start, in, ex) && link >= 0)
-        {
-          walker.Walk(TetMesh::LinkTet(link), TetMesh::LinkFace(link), ex, visit, out, c.tetsCrossed, nudges, records);
-        }
-        tDone = out.t;
-      }
-      else
-      {
-        ++nudges; // the origin on a face or the ray in one: the boundary entries take over
+        f = k;
+        ex.t = std::max(ex.t, in.t);
       }
     }
-    for (const Entry* next = stop ? nullptr : entries.Front(); next; next = stop ? nullptr : entries.Front())
+    if (f < 0)
+    {
+      ++nudges; // the origin on a face or the ray in one
+      return -1e300;
+    }
+    ++res.pieces;
+    ++c.tetsCrossed;
+    FaceCrossing out = ex;
+    const int link = records[start].link[f];
+    if (visit(start, in, ex) && link >= 0)
+    {
+      walker.Walk(TetMesh::LinkTet(link), TetMesh::LinkFace(link), ex, visit, out, c.tetsCrossed, nudges, records);
+    }
+    return out.t;
+  }
+
+  /// Every piece the ray enters through the entry faces, in t order, until the walk stops it.
+  template <class Walker, class Visit>
+  static void TracePieces(const TetRayCaster& rc, const Walker& walker, const Ray& r, double tDone, bool region,
+    const TetRecord* records, EntryCursor& entries, Visit& visit, RayResult& res, Counters& c,
+    std::uint64_t& nudges)
+  {
+    const auto& faces = region ? rc.Shown.faces : rc.M.BoundaryFaces();
+    const double tMargin = 1e-9 * rc.M.Bounds().Diagonal() / Length(r.dir);
+    for (const Entry* next; !visit.Stopped() && (next = entries.Front()) != nullptr;)
     {
       const Entry e = *next;
       entries.Pop();
@@ -203,9 +125,15 @@ struct TetRayCaster::Impl
       walker.Walk(bf[0], bf[1], e.x, visit, out, c.tetsCrossed, nudges, records);
       tDone = out.t;
     }
-    if (mip)
+  }
+
+  /// The ray's colour: the composite, or the transfer function at the largest scalar (a piece
+  /// that lay wholly before the ray's origin saw no scalar).
+  template <CompositeMode Mode>
+  static void FinishRay(const RenderSettings& S, const RayAccum& acc, RayResult& res)
+  {
+    if constexpr (Mode == CompositeMode::Maximum)
     {
-      // A piece that lay wholly before the ray's origin (`from`) saw no scalar.
       if (res.pieces > 0 && res.maxScalar > -1e300)
       {
         double rgb[3], tau;
@@ -213,9 +141,31 @@ struct TetRayCaster::Impl
         const double a = S.tf.Alpha(res.maxScalar);
         res.rgba[0] = rgb[0] * a, res.rgba[1] = rgb[1] * a, res.rgba[2] = rgb[2] * a, res.rgba[3] = a;
       }
-      return;
     }
-    res.rgba[0] = acc.rgb[0], res.rgba[1] = acc.rgb[1], res.rgba[2] = acc.rgb[2], res.rgba[3] = acc.Alpha();
+    else
+    {
+      res.rgba[0] = acc.rgb[0], res.rgba[1] = acc.rgb[1], res.rgba[2] = acc.rgb[2], res.rgba[3] = acc.Alpha();
+    }
+  }
+
+  /// TraceRay in the settings' mode.
+  template <class Rule, class Walker>
+  static void Trace(const TetRayCaster& rc, const Rule& rule, const TetWalker& w, const Walker& walker,
+    const Ray& r, int start, EntryCursor& entries, RayResult& res, Counters& c, std::uint64_t& nudges,
+    bool region = false, double from = -std::numeric_limits<double>::infinity())
+  {
+    if (rc.S.mode == RenderSettings::Mode::MaxIntensity)
+    {
+      TraceRay<Rule, CompositeMode::Maximum>(rc, rule, w, walker, r, start, entries, res, c, nudges, region, from);
+    }
+    else if (!rc.S.isos.empty())
+    {
+      TraceRay<Rule, CompositeMode::VolumeIsos>(rc, rule, w, walker, r, start, entries, res, c, nudges, region, from);
+    }
+    else
+    {
+      TraceRay<Rule, CompositeMode::Volume>(rc, rule, w, walker, r, start, entries, res, c, nudges, region, from);
+    }
   }
 
   static void Entries(const TetRayCaster& rc, const EntryFinder& f, const TetWalker& w, const Ray& r,

@@ -12,6 +12,7 @@
 #include "Camera.h"
 #include "Counters.h"
 #include "Image.h"
+#include "IsoSurfaceHit.h"
 #include "TetMesh.h"
 #include "TransferFunction.h"
 
@@ -23,13 +24,6 @@ namespace art
 {
 class Accelerator;
 class Progress;
-
-struct IsoSurface
-{
-  double value;
-  std::array<double, 3> rgb{ { 1, 1, 1 } };
-  double opacity = 1.0; ///< constant surface opacity
-};
 
 struct RenderSettings
 {

@@ -130,6 +130,28 @@ void TransferFunction::BuildTable()
     }
     OpaqueBuckets[j + 1] = OpaqueBuckets[j] + (o ? 1 : 0);
   }
+  const int n = static_cast<int>(N.size());
+  Slopes.assign(static_cast<std::size_t>(std::max(n - 1, 0)), Slope{});
+  for (int i = 0; i + 1 < n; ++i)
+  {
+    const double ds = N[i + 1].s - N[i].s;
+    for (int k = 0; k < 3; ++k)
+    {
+      Slopes[i].rgb[k] = (N[i + 1].rgb[k] - N[i].rgb[k]) / ds;
+    }
+    Slopes[i].tau = (N[i + 1].tau - N[i].tau) / ds;
+  }
+  OpaqueIntervals.assign(static_cast<std::size_t>(n + 2), 0);
+  for (int i = -1; i < n; ++i)
+  {
+    const bool o = i < 0 ? N.front().tau > 0 : (i + 1 >= n ? N.back().tau > 0 : N[i].tau > 0 || N[i + 1].tau > 0);
+    OpaqueIntervals[i + 2] = OpaqueIntervals[i + 1] + (o ? 1 : 0);
+  }
+  Bounds.resize(static_cast<std::size_t>(n + 1));
+  for (int i = -1; i < n; ++i)
+  {
+    Bounds[i + 1] = { i < 0 ? -HUGE_VAL : N[i].s, i + 1 < n ? N[i + 1].s : HUGE_VAL };
+  }
 }
 
 TransferFunction TransferFunction::FromVTK(vtkVolumeProperty* p)

@@ -122,6 +122,12 @@ public:
     }
     return i;
   }
+  /// Locate(s) for s likely in interval i (the last one of a ray): two comparisons when it is.
+  int LocateFrom(double s, int i) const
+  {
+    const std::size_t j = static_cast<std::size_t>(i + 1);
+    return s >= Bounds[j].lo && s < Bounds[j].hi ? i : Locate(s);
+  }
   /// Colour and extinction at s.
   void Evaluate(double s, double rgb[3], double& tau) const { EvaluateIn(Locate(s), s, rgb, tau); }
   /// The same, with s known to lie in interval i = Locate(s).
@@ -134,13 +140,22 @@ public:
       tau = n.tau;
       return;
     }
-    const Node &a = N[i], &b = N[i + 1];
-    const double w = (s - a.s) / (b.s - a.s);
-    for (int k = 0; k < 3; ++k)
+    const Node& a = N[i];
+    const Slope& d = Slopes[i];
+    const double ds = s - a.s;
+    rgb[0] = a.rgb[0] + ds * d.rgb[0], rgb[1] = a.rgb[1] + ds * d.rgb[1], rgb[2] = a.rgb[2] + ds * d.rgb[2];
+    tau = a.tau + ds * d.tau;
+  }
+  /// True when the extinction is zero all over the intervals i0 .. i1 (either order; -1 and
+  /// size-1 are the clamped ends, as Locate numbers them): a segment whose scalar runs between
+  /// them neither absorbs nor emits.
+  bool TransparentIntervals(int i0, int i1) const
+  {
+    if (i0 > i1)
     {
-      rgb[k] = a.rgb[k] + w * (b.rgb[k] - a.rgb[k]);
+      std::swap(i0, i1);
     }
-    tau = a.tau + w * (b.tau - a.tau);
+    return OpaqueIntervals[i1 + 2] == OpaqueIntervals[i0 + 1];
   }
   /// True when the extinction is zero for every scalar between s0 and s1 (either order), tested
   /// on the Locate table's buckets (conservative at bucket edges). Such a segment neither absorbs
@@ -184,6 +199,20 @@ private:
   }
   // OpaqueBuckets[j] counts the buckets below bucket j with any extinction.
   std::vector<int> OpaqueBuckets;
+  /// Colour and extinction per unit scalar over interval i (EvaluateIn without a division).
+  struct Slope
+  {
+    double rgb[3], tau;
+  };
+  std::vector<Slope> Slopes;
+  /// OpaqueIntervals[j] counts the intervals -1 .. j-2 with extinction at either end.
+  std::vector<int> OpaqueIntervals;
+  /// The scalars interval j-1 spans (infinite past the end nodes), for LocateFrom.
+  struct Span
+  {
+    double lo, hi;
+  };
+  std::vector<Span> Bounds;
   double T0 = 0, TScale = 0;
 };
 } // namespace art

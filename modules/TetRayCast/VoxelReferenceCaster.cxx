@@ -2,6 +2,7 @@
 
 #include "Error.h"
 #include "ExactIntegrator.h"
+#include "IsoSurfaceHit.h"
 #include "ParallelTiles.h"
 #include "Progress.h"
 #include "ValueMagnitude.h"
@@ -143,7 +144,7 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
   const auto start = std::chrono::steady_clock::now();
   img = Image(cam.Width(), cam.Height());
   const double step = std::min(H.x, std::min(H.y, H.z)) / PerVoxel;
-  const ExactIntegrator rule(TF);
+  const ExactIntegrator rule = ExactIntegrator::Precise(TF);
   if (progress)
   {
     progress->Begin("reference", double(cam.Width()) * cam.Height()); // ForEachTile counts pixels
@@ -153,31 +154,13 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
   // unit of t (the frame may shear, so both are taken from the world ray).
   auto IntegrateWithIsos = [&](const Ray& r, const Vec3& view, double ta, double dt, double len, double sa,
                              double sb, const ExactIntegrator& rule, RayAccum& acc) {
-    double fr[8];
-    int fi[8], n = 0;
-    for (std::size_t k = 0; k < Isos.size() && n < 8; ++k)
-    {
-      const double v = Isos[k].value;
-      if ((sa < v) != (sb < v))
-      {
-        fr[n] = (v - sa) / (sb - sa);
-        fi[n++] = static_cast<int>(k);
-      }
-    }
-    for (int a = 1; a < n; ++a)
-    {
-      for (int b = a; b > 0 && fr[b] < fr[b - 1]; --b)
-      {
-        std::swap(fr[b], fr[b - 1]);
-        std::swap(fi[b], fi[b - 1]);
-      }
-    }
+    const IsoCrossings hits(Isos, sa, sb);
     double fa = 0.0, s0 = sa;
-    for (int k = 0; k < n; ++k)
+    for (int k = 0; k < hits.n; ++k)
     {
-      const IsoSurface& iso = Isos[fi[k]];
-      rule.Integrate(s0, iso.value, (fr[k] - fa) * dt * len, acc);
-      fa = fr[k];
+      const IsoSurface& iso = Isos[hits.index[k]];
+      rule.Integrate(s0, iso.value, (hits.fraction[k] - fa) * dt * len, acc);
+      fa = hits.fraction[k];
       s0 = iso.value;
       // The world gradient is Inv^T times the frame's.
       const Vec3 gl0 = Gradient(r.At(ta + fa * dt));
@@ -187,12 +170,7 @@ RenderStats VoxelReferenceCaster::Render(const Camera& cam, Image& img, Progress
         g[a] = Inv[a] * gl0.x + Inv[3 + a] * gl0.y + Inv[6 + a] * gl0.z;
       }
       const double gl = Length(g);
-      const double shade = Ambient + Diffuse * (gl > 0 ? std::fabs(Dot(g, view)) / gl : 1.0);
-      for (int ch = 0; ch < 3; ++ch)
-      {
-        acc.rgb[ch] += acc.T * iso.opacity * shade * iso.rgb[ch];
-      }
-      acc.T *= 1.0 - iso.opacity;
+      CompositeIsoHit(iso, Ambient + Diffuse * (gl > 0 ? std::fabs(Dot(g, view)) / gl : 1.0), acc);
     }
     rule.Integrate(s0, sb, (1.0 - fa) * dt * len, acc);
   };
