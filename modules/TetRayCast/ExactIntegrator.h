@@ -35,8 +35,8 @@ ADAPTIVERTTETRAYCAST_EXPORT void IntegrateLinearPieceFast(const double c0[3], co
   double tau0, double tau1, double length, double C[3], double& T);
 
 /// Split at the transfer function's control points, each piece by LobattoPiece (the closed form
-/// past its range). A segment inside one interval that carries on from the last is integrated
-/// inline; the others go out of line.
+/// past its range). A segment inside one interval is integrated inline; one across control
+/// points goes out of line.
 class ADAPTIVERTTETRAYCAST_EXPORT ExactIntegrator : public SegmentRule<ExactIntegrator>
 {
 public:
@@ -56,7 +56,7 @@ private:
 #endif
   void IntegrateSpan(double s0, double s1, int i0, int i1, bool carried, double length, RayAccum& acc) const
   {
-    if (!(i0 == i1 && carried && !Exact && OnePiece(s1, i1, length, acc)))
+    if (!(i0 == i1 && !Exact && OnePiece(s0, s1, i1, carried, length, acc)))
     {
       Span(s0, s1, i0, i1, carried, length, acc);
     }
@@ -64,12 +64,18 @@ private:
 #if defined(__GNUC__)
   __attribute__((always_inline))
 #endif
-  bool OnePiece(double s1, int i1, double l, RayAccum& acc) const
+  bool OnePiece(double s0, double s1, int i, bool carried, double l, RayAccum& acc) const
   {
-    double cb[3], tb;
-    TF.EvaluateIn(i1, s1, cb, tb);
-    const double* ca = acc.lastRgb;
-    const double ta = acc.lastTau;
+    double ca[3], ta, cb[3], tb;
+    if (carried)
+    {
+      ca[0] = acc.lastRgb[0], ca[1] = acc.lastRgb[1], ca[2] = acc.lastRgb[2], ta = acc.lastTau;
+    }
+    else
+    {
+      TF.EvaluateIn(i, s0, ca, ta);
+    }
+    TF.EvaluateIn(i, s1, cb, tb);
     const double A = ta * l, B = 0.5 * (tb - ta) * l;
     double J, T;
     if (!(A + B > 0.0) || !lobatto::Piece(A, B, (ta > tb ? ta : tb) * l, J, T))
@@ -84,7 +90,7 @@ private:
       acc.rgb[k] += acc.T * (C > 0.0 ? C : 0.0);
     }
     acc.T *= T;
-    acc.lastS = s1, acc.lastI = i1, acc.lastKnown = true;
+    acc.lastS = s1, acc.lastI = i, acc.lastKnown = true;
     acc.lastRgb[0] = cb[0], acc.lastRgb[1] = cb[1], acc.lastRgb[2] = cb[2], acc.lastTau = tb;
     return true;
   }

@@ -108,10 +108,10 @@ ART_ALWAYS_INLINE inline void WalkFacesWith(const TetMesh& M, const Geo& g, int 
   // One step with the exit face opposite c[x] (x a compile-time constant with Speculate): the
   // exit crossing, the visit, then the exit face reversed, c[x] replaced by d, is the entry face
   // of the tet across it: e[x] stays, the others are the apex products. False: the walk ends.
-  auto step = [&](auto x, const TetRecord& rec, const Corner& d, const double p[3], const double w[3])
+  auto step = [&](auto x, const TetRecord& rec, const Corner& d, const double p[3], const double W[4])
                 ART_ALWAYS_INLINE {
     const int x1 = walk::Next[x], x2 = walk::Next[x1];
-    g.Exit(c[x2], c[x1], d, w[1], w[2], w[0], in.t, out);
+    g.Exit(c, x, d, W, in.t, out);
     if (!visit(t, in, out))
     {
       return false;
@@ -143,29 +143,34 @@ ART_ALWAYS_INLINE inline void WalkFacesWith(const TetMesh& M, const Geo& g, int 
     }
     const Corner d = g.MakeCorner(rec.v[entryFace]);
     const double p[3] = { g.Side(c[0], d), g.Side(c[1], d), g.Side(c[2], d) };
-    // The exit face's corner weights: w[0] for d, w[1] for c[x+2], w[2] for c[x+1] (each the
-    // product of its opposite edge in the face). Only a strictly interior crossing is taken on
-    // the signs' word; an edge, a vertex or a failed test goes to the fallback.
+    // The exit face's corner weights W, one per corner c[0..2] and d (W[3]), each the product of
+    // its opposite edge in the face; the corner left behind, c[x], weighs 0. Only a strictly
+    // interior crossing is taken on the signs' word; an edge, a vertex or a failed test goes to
+    // the fallback.
     int x = walk::ExitBySigns(p);
-    double w[3] = { 0, 0, 0 };
+    double W[4];
     if (x < 3)
     {
-      w[0] = -e[x], w[1] = p[walk::Next[x]], w[2] = -p[walk::Next[walk::Next[x]]];
+      const int x1 = walk::Next[x], x2 = walk::Next[x1];
+      W[x] = 0.0, W[x1] = -p[x2], W[x2] = p[x1], W[3] = -e[x];
     }
-    if (__builtin_expect(!(x < 3 && std::min(w[0], std::min(w[1], w[2])) > 0), 0))
+    if (__builtin_expect(!(x < 3 && W[3] > 0 && W[walk::Next[x]] > 0 && W[walk::Next[walk::Next[x]]] > 0), 0))
     {
+      double w[3];
       x = FallbackExit(e, p, w, nudged);
+      const int x1 = walk::Next[x], x2 = walk::Next[x1];
+      W[x] = 0.0, W[x1] = w[2], W[x2] = w[1], W[3] = w[0];
     }
     bool on;
     if constexpr (Speculate)
     {
-      on = x == 0 ? step(std::integral_constant<int, 0>(), rec, d, p, w)
-                  : (x == 1 ? step(std::integral_constant<int, 1>(), rec, d, p, w)
-                            : step(std::integral_constant<int, 2>(), rec, d, p, w));
+      on = x == 0 ? step(std::integral_constant<int, 0>(), rec, d, p, W)
+                  : (x == 1 ? step(std::integral_constant<int, 1>(), rec, d, p, W)
+                            : step(std::integral_constant<int, 2>(), rec, d, p, W));
     }
     else
     {
-      on = step(x, rec, d, p, w);
+      on = step(x, rec, d, p, W);
     }
     if (!on)
     {

@@ -117,7 +117,7 @@ public:
     {
       return false;
     }
-    Exit(a, b, c, s12, s20, s01, -std::numeric_limits<double>::infinity(), x);
+    FaceExit(a, b, c, s12, s20, s01, -std::numeric_limits<double>::infinity(), x);
     return true;
   }
 
@@ -147,8 +147,42 @@ public:
     }
     return s;
   }
-  /// Screen weights wu, ww, wd (>= 0, not normalised) to the crossing: perspective-correct.
-  void Exit(const Corner& u, const Corner& w, const Corner& d, double wu, double ww, double wd,
+  /// The walk's exit crossing, not before tIn: the face opposite c[x] with screen weights W
+  /// (FaceWalk.h; W[x] = 0, W[3] for d), perspective-correct. Sums run over the four corners in
+  /// this order, ((0 + 1) + (2 + 3)), as a vector of them would add them.
+  void Exit(const Corner c[3], int x, const Corner& d, const double W[4], double tIn, FaceCrossing& out) const
+  {
+    (void)x;
+    const double l = (W[0] + W[1]) + (W[2] + W[3]);
+    const double wm = (W[0] * c[0].m + W[1] * c[1].m) + (W[2] * c[2].m + W[3] * d.m);
+    const double wn = (W[0] * c[0].n + W[1] * c[1].n) + (W[2] * c[2].n + W[3] * d.n);
+    if (!(l > 0))
+    {
+      const int x1 = walk::Next[x], x2 = walk::Next[x1];
+      FaceExit(c[x2], c[x1], d, 1.0, 1.0, 1.0, tIn, out);
+      return;
+    }
+    Crossing(l, wm, wn, tIn, out);
+  }
+  /// The crossing from the weights' sum l and their sums with m and n.
+  void Crossing(double l, double wm, double wn, double tIn, FaceCrossing& out) const
+  {
+    if (Persp)
+    {
+      // World weights lambda_i / z_i: the depth is sum(lambda) / sum(lambda_i / z_i).
+      const double inv = 1.0 / wm;
+      out.t = std::max(l * inv * InvDz, tIn);
+      out.s = wn * inv;
+    }
+    else
+    {
+      const double inv = 1.0 / l;
+      out.t = std::max((wm * inv - Z0) * InvDz, tIn);
+      out.s = wn * inv;
+    }
+  }
+  /// Screen weights wu, ww, wd (>= 0, not normalised) to the crossing of face (u, w, d).
+  void FaceExit(const Corner& u, const Corner& w, const Corner& d, double wu, double ww, double wd,
     double tIn, FaceCrossing& out) const
   {
     double l = wu + ww + wd;
@@ -156,22 +190,15 @@ public:
     {
       wu = ww = wd = 1.0, l = 3.0;
     }
-    if (Persp)
-    {
-      // World weights lambda_i / z_i: the depth is sum(lambda) / sum(lambda_i / z_i).
-      const double inv = 1.0 / (wu * u.m + ww * w.m + wd * d.m);
-      out.t = std::max(l * inv * InvDz, tIn);
-      out.s = (wu * u.n + ww * w.n + wd * d.n) * inv;
-    }
-    else
-    {
-      const double inv = 1.0 / l;
-      out.t = std::max(((wu * u.m + ww * w.m + wd * d.m) * inv - Z0) * InvDz, tIn);
-      out.s = (wu * u.n + ww * w.n + wd * d.n) * inv;
-    }
+    Crossing(l, wu * u.m + ww * w.m + wd * d.m, wu * u.n + ww * w.n + wd * d.n, tIn, out);
   }
 
-private:
+  // What a walk of its own (ProjectedWalkAvx2.h) needs besides the above.
+  const ProjectedView::Vertex* Vertices() const { return V; }
+  double PixelX() const { return Px; }
+  double PixelY() const { return Py; }
+  /// Side's rounding bound: a product within it is taken by Exact.
+  double Bound() const { return Eps; }
   /// TetWalker::Side(u, v) scaled to the 2-D products: divided by Dz zu zv (perspective) or Dz.
   __attribute__((noinline)) double Exact(const Corner& u, const Corner& v) const
   {
@@ -180,6 +207,7 @@ private:
     return u.id < v.id ? s : -s;
   }
 
+private:
   const TetMesh& M;
   const ProjectedView::Vertex* V;
   const Vec3* P;

@@ -50,6 +50,9 @@ struct RenderSettings
   /// Walk the camera's rays in its projection (ProjectedWalker: 2-D side products) where it is
   /// valid, or always with the 3-D TetWalker (false).
   bool projectedWalk = true;
+  /// Walk the camera's rays with the SIMD form of the projected walk where the CPU has AVX2
+  /// (the same image bit for bit; false: the portable form).
+  bool simdWalk = true;
   /// Empty-space skipping (composite mode): walk only the tets the transfer function or an
   /// iso-surface can show anywhere between their vertex scalars. Rays enter that region through
   /// its boundary faces (screen buckets, every entry) and leave it where it ends. The image is
@@ -66,6 +69,9 @@ struct RenderSettings
   /// plane moves. The image is the same either way.
   bool cullClipped = true;
 };
+
+/// True when this CPU runs the SIMD form of the projected walk (RenderSettings::simdWalk).
+ADAPTIVERTTETRAYCAST_EXPORT bool SimdWalkAvailable();
 
 /// Cuts [t0, t1] of ray r to where every plane (a, b, c, d) has a x + b y + c z + d >= 0.
 /// Returns false when nothing is left.

@@ -91,6 +91,12 @@ public:
   {
     return u.id < v.id ? Dot(u.dq, v.q) : -Dot(v.dq, u.q);
   }
+  /// The walk's exit crossing, not before tIn: the face opposite c[x], weighted W (FaceWalk.h).
+  static void Exit(const Corner c[3], int x, const Corner& d, const double W[4], double tIn, FaceCrossing& out)
+  {
+    const int x1 = walk::Next[x], x2 = walk::Next[x1];
+    Exit(c[x2], c[x1], d, W[x2], W[x1], W[3], tIn, out);
+  }
   /// The crossing of face (u, w, d) weighted wu, ww, wd (>= 0, not normalised), not before tIn.
   static void Exit(const Corner& u, const Corner& w, const Corner& d, double wu, double ww, double wd,
     double tIn, FaceCrossing& out)
