@@ -9,7 +9,7 @@ namespace art
 {
 namespace
 {
-constexpr int B = 8; // bucket size in pixels
+constexpr int B = 4; // bucket size in pixels
 constexpr double Slack = 0.01; // pixels
 }
 
@@ -101,7 +101,8 @@ EntryFinder::EntryFinder(const TetMesh& m, const Camera& cam, const std::vector<
       // has coordinates beyond float's integer precision.
       auto down = [](double x) { const float f = static_cast<float>(x); return f > x ? std::nextafter(f, -HUGE_VALF) : f; };
       auto up = [](double x) { const float f = static_cast<float>(x); return f < x ? std::nextafter(f, HUGE_VALF) : f; };
-      slot[b] = { down(x0), up(x1), down(y0), up(y1), down(depth), static_cast<int>(b) };
+      slot[b] = { down(x0), up(x1), down(y0), up(y1), down(depth), static_cast<int>(b),
+        { v[fv[0]], v[fv[1]], v[fv[2]] } };
     }
   }, nullptr);
   Begin.assign(static_cast<std::size_t>(BW) * BH + 1, 0);
@@ -166,6 +167,17 @@ bool EntryFinder::Empty(int x0, int y0, int x1, int y1) const
   return true;
 }
 
+bool EntryFinder::Test(const TetWalker& w, const ProjectedWalker* pw, double tmin, const EntrySlot& sl, Entry& e) const
+{
+  const bool in = pw ? pw->CrossesFace(sl.v[0], sl.v[1], sl.v[2], -1, e.x) : w.CrossesFace(sl.v[0], sl.v[1], sl.v[2], -1, e.x);
+  if (!in || e.x.t < tmin)
+  {
+    return false;
+  }
+  e.face = sl.face;
+  return true;
+}
+
 bool EntryFinder::Test(const TetWalker& w, const ProjectedWalker* pw, double tmin, int b, Entry& e) const
 {
   const auto& bf = F[b];
@@ -219,7 +231,7 @@ void EntryFinder::Find(const TetWalker& w, const Ray& r, int px, int py, bool al
     const int k = (py / B) * BW + px / B;
     for (const EntrySlot *sl = Slots.data() + Begin[k], *end = Slots.data() + Begin[k + 1]; sl != end; ++sl)
     {
-      if (fx >= sl->x0 && fx <= sl->x1 && fy >= sl->y0 && fy <= sl->y1 && Test(w, pw, r.tmin, sl->face, e))
+      if (fx >= sl->x0 && fx <= sl->x1 && fy >= sl->y0 && fy <= sl->y1 && Test(w, pw, r.tmin, *sl, e))
       {
         out.push_back(e);
         hint = e.face;
@@ -263,14 +275,15 @@ void EntryFinder::Start(EntryCursor& cur, const TetWalker& w, const Ray& r, int 
   cur.Next = Slots.data() + Begin[k];
   cur.End = Slots.data() + Begin[k + 1];
   cur.Fx = static_cast<float>(px), cur.Fy = static_cast<float>(py);
-  // A face's points lie at depth z >= its slot's z, where the ray is at t >= (z - Z0) / Dz. Faces
-  // that far beyond the nearest entry found need no test yet. The slack covers the crossings'
-  // rounding (relative 1e-12 at worst), so a face is never left behind an entry it comes before.
+  // Faces far beyond the nearest entry found need no test yet (UpdateStop). The slack covers the
+  // crossings' rounding (relative 1e-12 at worst), so a face is never left behind an entry it
+  // comes before.
   const double dz = Dot(r.dir, Fwd);
   cur.Prune = dz > 0;
   cur.InvDz = cur.Prune ? 1.0 / dz : 0.0;
   cur.Z0 = Dot(r.org - Eye, Fwd);
   cur.Slack = DepthMargin * cur.InvDz;
+  cur.UpdateStop();
 }
 
 void EntryCursor::Insert(const Entry& e)
@@ -280,22 +293,34 @@ void EntryCursor::Insert(const Entry& e)
   {
     std::swap(Pending[i], Pending[i - 1]);
   }
+  UpdateStop();
+}
+
+void EntryCursor::UpdateStop()
+{
+  // A face's points lie at depth z >= its slot's z, where the ray is at t >= (z - Z0) / Dz: a slot
+  // whose t would pass the next entry's by the slack lies behind it. In depth, with a relative
+  // margin for the division's rounding (far below the slack).
+  ZStop = HUGE_VAL;
+  if (Prune && Head < Pending.size())
+  {
+    const double t = Pending[Head].x.t;
+    const double stop = Z0 + (t + Slack + 1e-9 * std::fabs(t)) / InvDz;
+    ZStop = stop + 1e-12 * std::fabs(stop);
+  }
 }
 
 void EntryCursor::Scan()
 {
+  UpdateStop(); // the caller may have taken the head since
   Entry e;
   for (; Next != End; ++Next)
   {
-    if (Head < Pending.size() && Prune)
+    if (Next->z > ZStop)
     {
-      const double t = Pending[Head].x.t;
-      if ((Next->z - Z0) * InvDz > t + Slack + 1e-9 * std::fabs(t))
-      {
-        return; // this face and every later one lie behind the next entry
-      }
+      return; // this face and every later one lie behind the next entry
     }
-    if (Fx >= Next->x0 && Fx <= Next->x1 && Fy >= Next->y0 && Fy <= Next->y1 && F->Test(*W, PW, TMin, Next->face, e))
+    if (Fx >= Next->x0 && Fx <= Next->x1 && Fy >= Next->y0 && Fy <= Next->y1 && F->Test(*W, PW, TMin, *Next, e))
     {
       Insert(e);
     }

@@ -30,12 +30,13 @@ struct Entry
 
 class EntryFinder;
 
-/// A face in one of EntryFinder's screen buckets: its pixel box (with slack) and nearest depth
-/// along the view, inline so that a bucket's scan reads memory in order.
+/// A face in one of EntryFinder's screen buckets: its pixel box (with slack), nearest depth along
+/// the view and vertices (outward order), inline so that a bucket's scan reads memory in order.
 struct EntrySlot
 {
   float x0, x1, y0, y1, z;
   int face;
+  int v[3];
 };
 
 /// One ray's entries in t order (EntryFinder::Start), found as they are asked for, or a list
@@ -76,6 +77,9 @@ private:
   float Fx = 0, Fy = 0;
   double TMin = 0, Z0 = 0, InvDz = 0, Slack = 0;
   bool Prune = false;
+  /// Slots deeper than this lie behind the next entry found (ZStop's depth rule); +inf for none.
+  double ZStop = 0;
+  void UpdateStop();
 };
 
 class ADAPTIVERTTETRAYCAST_EXPORT EntryFinder
@@ -110,6 +114,7 @@ public:
 private:
   friend class EntryCursor;
   bool Test(const TetWalker& w, const ProjectedWalker* pw, double tmin, int b, Entry& e) const;
+  bool Test(const TetWalker& w, const ProjectedWalker* pw, double tmin, const EntrySlot& sl, Entry& e) const;
 
   const TetMesh& M;
   const std::vector<std::array<int, 2>>& F; ///< the faces entered through

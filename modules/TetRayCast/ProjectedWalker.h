@@ -111,7 +111,12 @@ public:
   {
     const auto& v = M.Tet(t);
     const int* fv = TetMesh::FaceVertex[f];
-    const Corner a = MakeCorner(v[fv[0]]), b = MakeCorner(v[fv[1]]), c = MakeCorner(v[fv[2]]);
+    return CrossesFace(v[fv[0]], v[fv[1]], v[fv[2]], sense, x);
+  }
+  /// The same for the face with vertices a, b, c in its tet's outward order.
+  bool CrossesFace(int ia, int ib, int ic, int sense, FaceCrossing& x) const
+  {
+    const Corner a = MakeCorner(ia), b = MakeCorner(ib), c = MakeCorner(ic);
     const double s01 = sense * Side(a, b), s12 = sense * Side(b, c), s20 = sense * Side(c, a);
     if (s01 < 0 || s12 < 0 || s20 < 0 || !(s01 + s12 + s20 > 0))
     {

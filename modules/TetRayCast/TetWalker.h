@@ -41,9 +41,14 @@ public:
   {
     const auto& v = M.Tet(t);
     const int* fv = TetMesh::FaceVertex[f];
-    const double s01 = sense * Side(v[fv[0]], v[fv[1]]);
-    const double s12 = sense * Side(v[fv[1]], v[fv[2]]);
-    const double s20 = sense * Side(v[fv[2]], v[fv[0]]);
+    return CrossesFace(v[fv[0]], v[fv[1]], v[fv[2]], sense, x);
+  }
+  /// The same for the face with vertices a, b, c in its tet's outward order.
+  bool CrossesFace(int a, int b, int c, int sense, FaceCrossing& x) const
+  {
+    const double s01 = sense * Side(a, b);
+    const double s12 = sense * Side(b, c);
+    const double s20 = sense * Side(c, a);
     if (s01 < 0 || s12 < 0 || s20 < 0)
     {
       return false;
@@ -54,9 +59,9 @@ public:
       return false;
     }
     const double wa = s12 / sum, wb = s20 / sum, wc = s01 / sum;
-    const Vec3 p = P[v[fv[0]]] * wa + P[v[fv[1]]] * wb + P[v[fv[2]]] * wc;
+    const Vec3 p = P[a] * wa + P[b] * wb + P[c] * wc;
     x.t = Dot(p - O, D) * InvDD;
-    x.s = F[v[fv[0]]] * wa + F[v[fv[1]]] * wb + F[v[fv[2]]] * wc;
+    x.s = F[a] * wa + F[b] * wb + F[c] * wc;
     return true;
   }
 

@@ -21,6 +21,12 @@
 class vtkDataSet;
 class vtkVolumeProperty;
 
+#if defined(__GNUC__)
+#define ART_TF_INLINE __attribute__((always_inline))
+#else
+#define ART_TF_INLINE
+#endif
+
 namespace art
 {
 class TetMesh;
@@ -100,7 +106,7 @@ public:
 
   /// Index i of the interval [s_i, s_{i+1}] holding s (-1 below the first node, size-1 above).
   /// Inline: the ray caster asks once or twice per tet.
-  int Locate(double s) const
+  ART_TF_INLINE int Locate(double s) const
   {
     if (s < N.front().s)
     {
@@ -123,7 +129,7 @@ public:
     return i;
   }
   /// Locate(s) for s likely in interval i (the last one of a ray): two comparisons when it is.
-  int LocateFrom(double s, int i) const
+  ART_TF_INLINE int LocateFrom(double s, int i) const
   {
     const std::size_t j = static_cast<std::size_t>(i + 1);
     return s >= Bounds[j].lo && s < Bounds[j].hi ? i : Locate(s);
@@ -131,7 +137,7 @@ public:
   /// Colour and extinction at s.
   void Evaluate(double s, double rgb[3], double& tau) const { EvaluateIn(Locate(s), s, rgb, tau); }
   /// The same, with s known to lie in interval i = Locate(s).
-  void EvaluateIn(int i, double s, double rgb[3], double& tau) const
+  ART_TF_INLINE void EvaluateIn(int i, double s, double rgb[3], double& tau) const
   {
     if (i < 0 || i + 1 >= static_cast<int>(N.size()))
     {
@@ -149,7 +155,7 @@ public:
   /// True when the extinction is zero all over the intervals i0 .. i1 (either order; -1 and
   /// size-1 are the clamped ends, as Locate numbers them): a segment whose scalar runs between
   /// them neither absorbs nor emits.
-  bool TransparentIntervals(int i0, int i1) const
+  ART_TF_INLINE bool TransparentIntervals(int i0, int i1) const
   {
     if (i0 > i1)
     {
