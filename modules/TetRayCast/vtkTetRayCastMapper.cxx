@@ -9,7 +9,6 @@
 #include "TetMesh.h"
 #include "TetRayCaster.h"
 
-#include <vtkAutoInit.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
@@ -20,7 +19,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPiecewiseFunction.h>
 #include <vtkPointData.h>
-#include <vtkRayCastImageDisplayHelper.h>
+#include <vtkOpenGLRayCastImageDisplayHelper.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
@@ -37,10 +36,6 @@
 #include <memory>
 #include <thread>
 #include <vector>
-
-// The textured-quad helper is an OpenGL2 override of vtkRayCastImageDisplayHelper.
-VTK_MODULE_INIT(vtkRenderingOpenGL2);
-VTK_MODULE_INIT(vtkRenderingVolumeOpenGL2);
 
 vtkStandardNewMacro(vtkTetRayCastMapper);
 
@@ -154,13 +149,15 @@ struct vtkTetRayCastMapper::Internals
   std::vector<std::array<double, 4>> LastPlanes; ///< the last frame's clipping planes (engine coordinates)
   vtkSmartPointer<vtkImageData> Last = vtkSmartPointer<vtkImageData>::New();
   std::vector<unsigned char> Bytes;
-  vtkSmartPointer<vtkRayCastImageDisplayHelper> Helper;
+  vtkSmartPointer<vtkOpenGLRayCastImageDisplayHelper> Helper;
 };
 
 vtkTetRayCastMapper::vtkTetRayCastMapper()
   : Impl(new Internals)
 {
-  this->Impl->Helper.TakeReference(vtkRayCastImageDisplayHelper::New());
+  // The OpenGL helper itself, not vtkRayCastImageDisplayHelper::New(): the factory override
+  // needs the application to initialise vtkRenderingVolumeOpenGL2, and a library must not.
+  this->Impl->Helper.TakeReference(vtkOpenGLRayCastImageDisplayHelper::New());
 }
 
 vtkTetRayCastMapper::~vtkTetRayCastMapper()
@@ -198,35 +195,78 @@ void vtkTetRayCastMapper::ReleaseGraphicsResources(vtkWindow* w)
   }
 }
 
+// One frame's state as Render's steps pass it on.
+struct vtkTetRayCastMapper::Frame
+{
+  vtkDataSet* input = nullptr;
+  vtkUnstructuredGrid* grid = nullptr;
+  vtkSmartPointer<vtkUnstructuredGrid> engineGrid; ///< the selected scalars as the engine's array
+  std::string key;                                 ///< what the engine's mesh was built from
+  vtkMatrix4x4* toWorld = nullptr;
+  vtkNew<vtkMatrix4x4> engineToWorld, meshToEngine, toData; // the engine's mesh is meshToEngine * data
+  bool similar = true; ///< toWorld is a rotation times one positive scale
+  art::RenderSettings settings;
+  int vw = 1, vh = 1, w = 1, h = 1; ///< viewport and image sizes
+  art::Image img;
+};
+
 void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
-  vtkDataSet* input = this->GetDataSetInput();
-  if (!input || !ren || !vol)
+  Frame f;
+  f.input = this->GetDataSetInput();
+  if (!f.input || !ren || !vol || !this->SelectScalars(f))
   {
     return;
   }
-  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(input);
-  if (!grid)
+  this->PlaceInData(vol, f);
+  if (!this->UpdateMesh(f))
+  {
+    return;
+  }
+  // A frame's time, for AutoAdjustSampleDistances, leaves out (re)building the mesh.
+  const auto frameStart = std::chrono::steady_clock::now();
+  if (!this->FrameSettings(vol, f))
+  {
+    return;
+  }
+  this->AdjustSampleDistance(vol);
+  if (!this->CastFrame(ren, f))
+  {
+    return;
+  }
+  this->DrawFrame(ren, vol, f);
+  this->LastFrameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
+}
+
+bool vtkTetRayCastMapper::SelectScalars(Frame& f)
+{
+  f.grid = vtkUnstructuredGrid::SafeDownCast(f.input);
+  if (!f.grid)
   {
     this->FrameError("input must be a vtkUnstructuredGrid");
-    return;
+    return false;
   }
-  if (grid->GetNumberOfCells() == 0)
+  if (f.grid->GetNumberOfCells() == 0)
   {
-    return; // nothing to draw (a threshold that keeps nothing), as VTK's mappers draw nothing; no error each frame
+    return false; // nothing to draw (a threshold that keeps nothing), as VTK's mappers draw nothing; no error each frame
   }
   // The array the usual vtkAbstractVolumeMapper settings select (ScalarMode, SelectScalarArray).
-  std::string key, error;
+  std::string error;
   const int component = this->VectorMode == MAGNITUDE ? art::Magnitude
     : this->VectorMode == COMPONENT                   ? this->VectorComponent
                                                       : art::WholeArray;
-  vtkSmartPointer<vtkUnstructuredGrid> engineGrid = art::mapper::SelectedScalars(grid, this->ScalarMode,
-    this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME ? this->ArrayName : nullptr, this->ArrayId, component, key, error);
-  if (!engineGrid)
+  f.engineGrid = art::mapper::SelectedScalars(f.grid, this->ScalarMode,
+    this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME ? this->ArrayName : nullptr, this->ArrayId, component, f.key, error);
+  if (!f.engineGrid)
   {
     this->FrameError(error);
-    return;
+    return false;
   }
+  return true;
+}
+
+void vtkTetRayCastMapper::PlaceInData(vtkVolume* vol, Frame& f)
+{
   // Rays are cast in the data's own coordinates when the volume's matrix is a rotation times one
   // scale (the camera goes through its inverse; segment lengths, and so the opacity unit
   // distance, are measured in data units). Any other matrix moves the mesh's points through its
@@ -234,91 +274,89 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // moved through it sees right and left swapped, and the volume was drawn on the wrong side of
   // the view) divided by its scale, so lengths stay in data units; an anisotropic scale
   // (SetScale(1, 1, 3) for thick slices) or a shear as it is, lengths in world units.
-  vtkMatrix4x4* toWorld = vol->GetMatrix();
-  vtkNew<vtkMatrix4x4> engineToWorld, meshToEngine; // the engine's mesh is meshToEngine * data
-  const double scale = art::mapper::SimilarityScale(toWorld);
-  const bool similar = scale > 0 && toWorld->Determinant() > 0;
+  f.toWorld = vol->GetMatrix();
+  const double scale = art::mapper::SimilarityScale(f.toWorld);
+  f.similar = scale > 0 && f.toWorld->Determinant() > 0;
   // Every digit: a key that rounds would keep a stale mesh for a slightly changed matrix or plane.
   auto exact = [](double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, " %.17g", v);
     return std::string(buf);
   };
-  if (similar)
+  if (f.similar)
   {
-    engineToWorld->DeepCopy(toWorld);
+    f.engineToWorld->DeepCopy(f.toWorld);
   }
   else
   {
     // Only the linear part goes into the mesh (divided by a mirror's scale); the translation
     // stays with the camera, so moving such a volume does not rebuild its mesh.
     const double k = scale > 0 ? scale : 1.0;
-    key += " world";
+    f.key += " world";
     for (int r = 0; r < 3; ++r)
     {
       for (int c = 0; c < 3; ++c)
       {
-        meshToEngine->SetElement(r, c, toWorld->GetElement(r, c) / k);
-        key += exact(toWorld->GetElement(r, c));
+        f.meshToEngine->SetElement(r, c, f.toWorld->GetElement(r, c) / k);
+        f.key += exact(f.toWorld->GetElement(r, c));
       }
-      meshToEngine->SetElement(r, 3, 0.0);
-      engineToWorld->SetElement(r, r, k);
-      engineToWorld->SetElement(r, 3, toWorld->GetElement(r, 3));
+      f.meshToEngine->SetElement(r, 3, 0.0);
+      f.engineToWorld->SetElement(r, r, k);
+      f.engineToWorld->SetElement(r, 3, f.toWorld->GetElement(r, 3));
     }
   }
-  vtkNew<vtkMatrix4x4> toData;
-  vtkMatrix4x4::Invert(engineToWorld, toData);
+  vtkMatrix4x4::Invert(f.engineToWorld, f.toData);
+}
+
+bool vtkTetRayCastMapper::UpdateMesh(Frame& f)
+{
   // (Re)build the engine's arrays only when the data, the array or the matrix's linear part
   // changed; clipping planes cut the rays, not the mesh.
-  if ((!this->Impl->Mesh && !this->Impl->MeshRefused) || this->Impl->MeshInput != input ||
-    this->Impl->MeshTime < input->GetMTime() || this->Impl->MeshArray != key)
+  Internals& I = *this->Impl;
+  if ((I.Mesh || I.MeshRefused) && I.MeshInput == f.input && I.MeshTime >= f.input->GetMTime() && I.MeshArray == f.key)
   {
-    try
-    {
-      std::string note;
-      this->Impl->Caster.reset();
-      this->Impl->Mesh.reset();
-      engineGrid = art::mapper::WithoutGhosts(engineGrid, grid);
-      if (engineGrid->GetNumberOfCells() == 0)
-      {
-        return; // only ghosts: their own pieces draw them
-      }
-      if (!similar)
-      {
-        engineGrid = art::mapper::Transformed(engineGrid, meshToEngine);
-      }
-      this->Impl->Mesh = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(engineGrid, {}, &note));
-      this->Impl->Caster = std::make_unique<art::TetRayCaster>(*this->Impl->Mesh, art::RenderSettings{});
-      if (!note.empty())
-      {
-        vtkWarningMacro(<< note);
-      }
-    }
-    catch (const art::Error& e)
-    {
-      // Said once for this input: every frame (each camera move in ParaView) said it again.
-      this->Impl->Caster.reset();
-      this->Impl->Mesh.reset();
-      this->Impl->MeshInput = input;
-      this->Impl->MeshTime = input->GetMTime();
-      this->Impl->MeshArray = key;
-      this->Impl->MeshRefused = true;
-      vtkErrorMacro(<< e.what());
-      return;
-    }
-    this->Impl->MeshInput = input;
-    this->Impl->MeshTime = input->GetMTime();
-    this->Impl->MeshArray = key;
-    this->Impl->MeshRefused = false;
+    return I.Mesh != nullptr; // a refused input said why when it was built
   }
-  if (!this->Impl->Mesh)
+  try
   {
-    return; // this input was refused, and said why, when it was built
+    std::string note;
+    I.Caster.reset();
+    I.Mesh.reset();
+    vtkSmartPointer<vtkUnstructuredGrid> engineGrid = art::mapper::WithoutGhosts(f.engineGrid, f.grid);
+    if (engineGrid->GetNumberOfCells() == 0)
+    {
+      return false; // only ghosts: their own pieces draw them
+    }
+    if (!f.similar)
+    {
+      engineGrid = art::mapper::Transformed(engineGrid, f.meshToEngine);
+    }
+    I.Mesh = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(engineGrid, {}, &note));
+    I.Caster = std::make_unique<art::TetRayCaster>(*I.Mesh, art::RenderSettings{});
+    if (!note.empty())
+    {
+      vtkWarningMacro(<< note);
+    }
+    I.MeshRefused = false;
   }
-  // A frame's time, for AutoAdjustSampleDistances, leaves out (re)building the mesh.
-  const auto frameStart = std::chrono::steady_clock::now();
-  art::RenderSettings s;
-  this->WarnUnsupported(vol->GetProperty(), grid);
+  catch (const art::Error& e)
+  {
+    // Said once for this input: every frame (each camera move in ParaView) said it again.
+    I.Caster.reset();
+    I.Mesh.reset();
+    I.MeshRefused = true;
+    vtkErrorMacro(<< e.what());
+  }
+  I.MeshInput = f.input;
+  I.MeshTime = f.input->GetMTime();
+  I.MeshArray = f.key;
+  return I.Mesh != nullptr;
+}
+
+bool vtkTetRayCastMapper::FrameSettings(vtkVolume* vol, Frame& f)
+{
+  art::RenderSettings& s = f.settings;
+  this->WarnUnsupported(vol->GetProperty(), f.grid);
   try
   {
     s.tf = art::TransferFunction::FromVTK(vol->GetProperty());
@@ -326,19 +364,23 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   catch (const art::Error& e)
   {
     this->FrameError(e.what());
-    return;
+    return false;
   }
   s.earlyTermination = this->EarlyRayTermination >= 1.0 ? 2.0 : this->EarlyRayTermination;
   s.rule = this->TrapezoidRule ? art::RenderSettings::Rule::Trapezoid : art::RenderSettings::Rule::Exact;
   s.mode = this->BlendMode == MAXIMUM_INTENSITY_BLEND ? art::RenderSettings::Mode::MaxIntensity
                                                       : art::RenderSettings::Mode::Composite;
   s.isos = this->Impl->Isos;
-  s.clipPlanes = art::mapper::PlanesInData(this->ClippingPlanes, engineToWorld);
+  s.clipPlanes = art::mapper::PlanesInData(this->ClippingPlanes, f.engineToWorld);
   // While a plane moves, each frame only cuts its rays; once it stands still, the tets it cuts
   // away also leave the walked region (a rebuild per change, worth it only for planes that stay).
   s.cullClipped = s.clipPlanes == this->Impl->LastPlanes;
   this->Impl->LastPlanes = s.clipPlanes;
+  return true;
+}
 
+void vtkTetRayCastMapper::AdjustSampleDistance(vtkVolume* vol)
+{
   const double allocated = vol->GetAllocatedRenderTime();
   if (this->AutoAdjustSampleDistances && this->LastFrameSeconds > 0 && allocated > 0)
   {
@@ -348,50 +390,53 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->ImageSampleDistance = static_cast<float>(std::min(hi,
       std::max(lo, this->ImageSampleDistance * std::sqrt(this->LastFrameSeconds / allocated))));
   }
+}
+
+bool vtkTetRayCastMapper::CastFrame(vtkRenderer* ren, Frame& f)
+{
   int* size = ren->GetSize();
-  const int vw = std::max(1, size[0]), vh = std::max(1, size[1]);
-  const int w = std::max(1, static_cast<int>(vw / this->ImageSampleDistance + 0.5));
-  const int h = std::max(1, static_cast<int>(vh / this->ImageSampleDistance + 0.5));
+  f.vw = std::max(1, size[0]), f.vh = std::max(1, size[1]);
+  f.w = std::max(1, static_cast<int>(f.vw / this->ImageSampleDistance + 0.5));
+  f.h = std::max(1, static_cast<int>(f.vh / this->ImageSampleDistance + 0.5));
   vtkNew<vtkCamera> local;
   local->DeepCopy(ren->GetActiveCamera());
-  if (!engineToWorld->IsIdentity())
+  if (!f.engineToWorld->IsIdentity())
   {
-    IntoData(local, engineToWorld, toData);
+    IntoData(local, f.engineToWorld, f.toData);
   }
   this->WarnUnsupported(ren->GetActiveCamera());
-  const art::Camera cam = art::Camera::FromVTK(local, w, h);
+  const art::Camera cam = art::Camera::FromVTK(local, f.w, f.h);
   std::vector<double> ends;
   if (this->IntermixIntersectingGeometry && ren->GetNumberOfPropsRendered() > 0 && ren->GetRenderWindow())
   {
-    ends = RayEndsFromDepth(ren, vw, vh, cam, toData);
+    ends = RayEndsFromDepth(ren, f.vw, f.vh, cam, f.toData);
   }
-  art::Image img;
-  this->Impl->Caster->SetSettings(std::move(s));
+  this->Impl->Caster->SetSettings(std::move(f.settings));
   // Progress goes to observers on the thread that called Render only, as VTK's own ray casters
   // report from their thread 0: observers (Python ones too) run where VTK runs them. There the
   // render window's abort check (an interactor's pending event) can also stop the frame.
   const std::thread::id caller = std::this_thread::get_id();
   vtkRenderWindow* win = ren->GetRenderWindow();
   double reported = -1.0;
-  art::Progress progress([&](double f, const std::string&) {
+  art::Progress progress([&](double p, const std::string&) {
     if (std::this_thread::get_id() != caller)
     {
       return;
     }
-    reported = f;
-    this->InvokeEvent(vtkCommand::VolumeMapperRenderProgressEvent, &f);
+    reported = p;
+    this->InvokeEvent(vtkCommand::VolumeMapperRenderProgressEvent, &p);
     if (win && win->CheckAbortStatus())
     {
       progress.Cancel(); // called only once the render has started, with progress built
     }
   });
   this->InvokeEvent(vtkCommand::VolumeMapperRenderStartEvent);
-  const art::RenderStats st = this->Impl->Caster->Render(cam, img, &progress, ends.empty() ? nullptr : &ends);
+  const art::RenderStats st = this->Impl->Caster->Render(cam, f.img, &progress, ends.empty() ? nullptr : &ends);
   if (progress.Cancelled())
   {
     // An aborted frame is not drawn; the last whole image stays.
     this->InvokeEvent(vtkCommand::VolumeMapperRenderEndEvent);
-    return;
+    return false;
   }
   if (reported < 1.0)
   {
@@ -402,8 +447,13 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   this->LastRenderTime = st.seconds;
   this->Impl->LastError.clear();
   this->LastTetsCrossed = static_cast<double>(st.counters.tetsCrossed);
+  return true;
+}
 
+void vtkTetRayCastMapper::DrawFrame(vtkRenderer* ren, vtkVolume* vol, Frame& f)
+{
   // Keep the float image (bottom row first, as VTK images are) and draw 8-bit premultiplied RGBA.
+  const int w = f.w, h = f.h;
   vtkImageData* last = this->Impl->Last;
   last->SetDimensions(w, h, 1);
   last->AllocateScalars(VTK_FLOAT, 4);
@@ -412,7 +462,7 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   bytes.resize(static_cast<std::size_t>(4) * w * h);
   for (int y = 0; y < h; ++y)
   {
-    const float* row = img.Pixel(0, h - 1 - y);
+    const float* row = f.img.Pixel(0, h - 1 - y);
     std::copy(row, row + 4 * w, dst + static_cast<std::size_t>(4) * w * y);
     for (int i = 0; i < 4 * w; ++i)
     {
@@ -423,14 +473,13 @@ void vtkTetRayCastMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   last->Modified();
 
   double b[6];
-  input->GetBounds(b);
-  const double minZ = QuadDepth(ren, b, toWorld);
+  f.input->GetBounds(b);
+  const double minZ = QuadDepth(ren, b, f.toWorld);
   // The quad is placed in image samples: the image's own size is the viewport's (VTK's ray-cast
   // mappers pass the same), so a coarser ImageSampleDistance still fills the viewport.
   int mem[2] = { w, h }, view[2] = { w, h }, use[2] = { w, h }, origin[2] = { 0, 0 };
   this->Impl->Helper->SetPreMultipliedColors(1);
   this->Impl->Helper->RenderTexture(vol, ren, mem, view, use, origin, static_cast<float>(minZ), bytes.data());
-  this->LastFrameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
 }
 
 void vtkTetRayCastMapper::WarnUnsupported(vtkVolumeProperty* p, vtkUnstructuredGrid* grid)

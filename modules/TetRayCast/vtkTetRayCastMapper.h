@@ -162,6 +162,23 @@ protected:
    */
   void FrameError(const std::string& message);
 
+  ///@{
+  /**
+   * Render's steps: the input's selected scalars; the matrices between data, engine and world;
+   * the engine's mesh (rebuilt when its input changed; false when there is none to draw); the
+   * frame's settings from the property; the sample distance for the allotted time; the rays
+   * cast (false when the frame was aborted); the image drawn as a textured quad.
+   */
+  struct Frame;
+  bool SelectScalars(Frame& f);
+  void PlaceInData(vtkVolume* vol, Frame& f);
+  bool UpdateMesh(Frame& f);
+  bool FrameSettings(vtkVolume* vol, Frame& f);
+  void AdjustSampleDistance(vtkVolume* vol);
+  bool CastFrame(vtkRenderer* ren, Frame& f);
+  void DrawFrame(vtkRenderer* ren, vtkVolume* vol, Frame& f);
+  ///@}
+
 private:
   vtkTetRayCastMapper(const vtkTetRayCastMapper&) = delete;
   void operator=(const vtkTetRayCastMapper&) = delete;
