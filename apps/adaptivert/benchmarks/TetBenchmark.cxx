@@ -4,8 +4,11 @@
 // run with VTK's vtkUnstructuredGridVolumeRayCastMapper (Bunyk) on the same meshes and
 // vtkFixedPointVolumeRayCastMapper on the voxels; every image scored (PSNR, SSIM, RMSE) against
 // the full-resolution voxel reference. The VTK mappers need a display (run under xvfb-run -a).
+// Any volume (resampled by a factor, labelled so) and any mesh series read from files (other
+// reducers' output) can be given; the scaling figure is the smallest mesh at FixedPoint's PSNR.
 #include "benchmarks/Bench.h"
 #include "benchmarks/BenchUtil.h"
+#include "benchmarks/TetBenchmark.h"
 #include "Camera.h"
 #include "cli/Command.h"
 #include "DataLoader.h"
@@ -32,6 +35,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkFixedPointVolumeRayCastMapper.h>
 #include <vtkImageData.h>
+#include <vtkImageResample.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -56,14 +60,7 @@
 
 namespace
 {
-struct Row
-{
-  std::string method, mesh, series; // series: the reduction's refinement, "full" or "voxels"
-  long long tets = 0, vertices = 0;
-  cli::BenchStats seconds;
-  art::ImageMetricsResult err;
-  double tetsPerRay = 0, nsPerTet = 0;
-};
+using Row = cli::TetBenchRow;
 
 art::Image OverBlack(art::Image img)
 {
@@ -148,13 +145,82 @@ private:
   vtkNew<vtkRenderWindow> Win;
 };
 
+void Declare(cli::Options& o)
+{
+  o.Add("tets-input", 0, "FILE", "volume for `bench tets`", cli::DataDir() + "/ct-head-128.mha");
+  o.Add("tets-resample", 0, "F", "resample the volume by F along each axis first (trilinear; labelled so)", "1");
+  o.Add("tets-levels", 0, "N,N..", "tet budgets of the reduction series (empty: none)", "10000,25000,50000,100000,250000");
+  o.Add("tets-series", 0, "LIST",
+    "reduction series rendered side by side: relocated (render's lattice refinement), bisection (no relocation), "
+    "anisotropic (MMG3D)", "relocated,anisotropic");
+  o.Add("tets-meshes", 0, "FILE,FILE..", "a mesh series read from files (another reducer's meshes of the volume)");
+  o.Add("tets-meshes-name", 0, "NAME", "name of the --tets-meshes series", "meshes");
+  o.Add("tets-no-full", 0, "", "leave out the full-resolution tets (too large past ~50M tets)");
+  o.Add("tets-main-only", 0, "", "time only `ours exact, ERT 0.99` of our variants (and VTK's mappers)");
+  o.Add("tets-size", 0, "WxH", "image size for `bench tets`", "500x500");
+  o.Add("tets-tf", 0, "NAME|FILE", "transfer function for `bench tets`", "ct-skin-bone");
+  o.Add("tets-plain-reduction", 0, "", "reduce in plain L2, not weighted by the transfer function's opacity");
+  o.Add("tets-no-relocate", 0, "", "the relocated series without relocation (as --tets-series bisection)");
+  o.Add("tets-bunyk-max", 0, "N", "largest mesh (tets) given to VTK's Bunyk mapper", "1000000");
+  o.Add("tets-no-vtk", 0, "", "skip VTK's mappers (they need a display)");
+}
+
+std::vector<std::string> SplitList(const std::string& s)
+{
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+  {
+    if (!item.empty())
+    {
+      out.push_back(item);
+    }
+  }
+  return out;
+}
+
+// The volume, resampled when asked (a larger size class of the same data, labelled so).
+vtkSmartPointer<vtkImageData> LoadBenchVolume(const std::string& in, double factor, cli::TetBenchSetup& setup)
+{
+  vtkSmartPointer<vtkImageData> volume = art::LoadVolume(in);
+  setup.input = in, setup.resample = factor;
+  setup.inputLabel = std::filesystem::path(in).filename().string();
+  if (factor != 1.0)
+  {
+    if (!(factor > 0.0 && factor <= 8.0))
+    {
+      throw art::Error("--tets-resample must lie in (0, 8]", in);
+    }
+    vtkNew<vtkImageResample> resample;
+    resample->SetInputData(volume);
+    resample->SetInterpolationModeToLinear();
+    for (int k = 0; k < 3; ++k)
+    {
+      resample->SetAxisMagnificationFactor(k, factor);
+    }
+    resample->Update();
+    volume = resample->GetOutput();
+    char label[64];
+    std::snprintf(label, sizeof label, " resampled x%g", factor);
+    setup.inputLabel += label;
+  }
+  volume->GetDimensions(setup.dims);
+  setup.voxels = static_cast<long long>(setup.dims[0]) * setup.dims[1] * setup.dims[2];
+  return volume;
+}
+
+struct MeshEntry
+{
+  std::string name, series;
+  std::unique_ptr<art::TetMesh> mesh;
+};
+
 // --tets-series, checked before any work; --tets-no-relocate turns relocated into bisection.
 std::vector<std::string> SeriesNames(const cli::Options& o)
 {
   std::vector<std::string> out;
-  std::stringstream ss(o.Get("tets-series"));
-  std::string s;
-  while (std::getline(ss, s, ','))
+  for (std::string s : SplitList(o.Get("tets-series")))
   {
     if (s == "relocated" && o.Flag("tets-no-relocate"))
     {
@@ -172,73 +238,210 @@ std::vector<std::string> SeriesNames(const cli::Options& o)
   return out;
 }
 
-void Declare(cli::Options& o)
+// Each --tets-series reduced to the --tets-levels budgets in one run.
+void AddReducedSeries(const cli::Options& o, vtkImageData* volume, const std::string& in,
+  const art::TransferFunction& tf, std::vector<MeshEntry>& meshes)
 {
-  o.Add("tets-input", 0, "FILE", "volume for `bench tets`", cli::DataDir() + "/ct-head-128.mha");
-  o.Add("tets-levels", 0, "N,N..", "tet budgets of the reduction series", "10000,25000,50000,100000,250000");
-  o.Add("tets-size", 0, "WxH", "image size for `bench tets`", "500x500");
-  o.Add("tets-tf", 0, "NAME|FILE", "transfer function for `bench tets`", "ct-skin-bone");
-  o.Add("tets-plain-reduction", 0, "", "reduce in plain L2, not weighted by the transfer function's opacity");
-  o.Add("tets-series", 0, "LIST",
-    "reduction series rendered side by side: relocated (render's lattice refinement), bisection (no relocation), "
-    "anisotropic (MMG3D)", "relocated,anisotropic");
-  o.Add("tets-no-relocate", 0, "", "the relocated series without relocation (as --tets-series bisection)");
-  o.Add("tets-bunyk-max", 0, "N", "largest mesh (tets) given to VTK's Bunyk mapper", "1000000");
-  o.Add("tets-no-vtk", 0, "", "skip VTK's mappers (they need a display)");
-}
-
-// Per series, the smallest mesh whose headline render reaches FixedPoint's PSNR, and its time
-// against FixedPoint's.
-void FixedPointMatch(const std::vector<Row>& rows, long long voxels, std::ostringstream& md)
-{
-  const auto fp = std::find_if(rows.begin(), rows.end(), [](const Row& r) { return r.series == "voxels"; });
-  if (fp == rows.end())
+#ifdef ART_HAVE_Reduction
+  std::vector<long long> levels;
+  for (const std::string& item : SplitList(o.Get("tets-levels")))
+  {
+    levels.push_back(std::stoll(item));
+  }
+  std::sort(levels.begin(), levels.end());
+  if (levels.empty())
   {
     return;
   }
-  char line[512];
-  std::vector<std::string> done;
-  for (const Row& r : rows)
+  const art::VoxelVolume voxels = art::VolumeFromImage(volume, in);
+  for (const std::string& series : SeriesNames(o))
   {
-    if (r.series == "voxels" || r.series == "full" || std::find(done.begin(), done.end(), r.series) != done.end())
+    std::fprintf(stderr, "reducing to %zu budgets (%s) ...\n", levels.size(), series.c_str());
+    art::ReducerOptions ro;
+    ro.TargetTets = levels.back();
+    ro.Levels = levels;
+    ro.RelocateVertices = series == "relocated"; // as render reduces
+    if (series == "anisotropic")
     {
-      continue;
+      ro.Refine = art::ReducerOptions::Refinement::Anisotropic;
     }
-    done.push_back(r.series);
-    const Row* best = nullptr;
-    for (const Row& q : rows)
+    if (!o.Flag("tets-plain-reduction"))
     {
-      if (q.series == r.series && q.method == "ours exact, ERT 0.99" && q.err.psnr >= fp->err.psnr &&
-        (!best || q.vertices < best->vertices))
-      {
-        best = &q;
-      }
+      ro.ScalarOpacity = tf.OpacityPoints();
     }
-    if (best)
+    const std::string prefix = series == "anisotropic" ? "anisotropic " : "reduced ";
+    for (const auto& r : art::TetReducer(ro).Run(voxels))
     {
-      std::snprintf(line, sizeof line,
-        "- %s: the smallest mesh at FixedPoint's PSNR (%.2f dB) is %s (%.2f%% of the vertices): %.2f dB in %.3f s, "
-        "%.2fx FixedPoint's time (%.3f s)\n",
-        r.series.c_str(), fp->err.psnr, best->mesh.c_str(), 100.0 * best->vertices / voxels, best->err.psnr,
-        best->seconds.median, best->seconds.median / fp->seconds.median, fp->seconds.median);
+      meshes.push_back({ prefix + std::to_string(r.NumberOfTets()), series,
+        std::make_unique<art::TetMesh>(cli::ToTetMesh(r)) });
     }
-    else
-    {
-      std::snprintf(line, sizeof line, "- %s: no mesh of the series reaches FixedPoint's PSNR (%.2f dB)\n",
-        r.series.c_str(), fp->err.psnr);
-    }
-    md << line;
   }
+#else
+  (void)o, (void)volume, (void)in, (void)tf, (void)meshes;
+#endif
+}
+
+std::vector<MeshEntry> BuildMeshes(const cli::Options& o, vtkImageData* volume, const std::string& in,
+  const art::TransferFunction& tf)
+{
+  std::vector<MeshEntry> meshes;
+  AddReducedSeries(o, volume, in, tf, meshes);
+  const std::string series = o.Get("tets-meshes-name");
+  for (const std::string& file : SplitList(o.Get("tets-meshes")))
+  {
+    std::fprintf(stderr, "reading %s ...\n", file.c_str());
+    auto m = std::make_unique<art::TetMesh>(art::TetMesh::FromVTK(art::LoadMesh(file), {}, nullptr, file));
+    meshes.push_back({ series + " " + std::to_string(m->NumberOfTets()), series, std::move(m) });
+  }
+  if (!o.Flag("tets-no-full"))
+  {
+    std::fprintf(stderr, "full-resolution tets ...\n");
+    meshes.push_back({ "full resolution", "full resolution",
+      std::make_unique<art::TetMesh>(art::TetMesh::FromImage(volume, in)) });
+  }
+  return meshes;
+}
+
+struct Scene
+{
+  const art::Camera& camera;
+  vtkCamera* cam;
+  vtkVolumeProperty* prop;
+  const art::TransferFunction& tf;
+  const art::Image& ref;
+  std::string dir;
+  int W, H, runs;
+  bool vtk, mainOnly;
+  long long bunykMax;
+};
+
+// Every method on one mesh, timed in turn, a frame each per round (TimeInterleaved): this
+// machine's speed drifts, and runs of one method after another would put the drift into the ratios.
+void TimeMesh(const Scene& sc, const MeshEntry& me, const std::function<void(const Row&)>& report)
+{
+  const art::TetMesh& m = *me.mesh;
+  std::string file = me.name;
+  std::replace(file.begin(), file.end(), ' ', '-');
+  struct Method
+  {
+    Row row;
+    std::function<double()> frame;
+    std::function<void(Row&)> finish; // error figures (and images) once timed
+  };
+  std::vector<Method> methods;
+  auto row = [&](const char* name) {
+    return Row{ name, me.name, me.series, static_cast<long long>(m.NumberOfTets()), static_cast<long long>(m.NumberOfPoints()) };
+  };
+  struct Variant
+  {
+    const char* name;
+    art::RenderSettings::Rule rule;
+    double ert;
+    bool skip = true;
+  };
+  struct Ours
+  {
+    std::unique_ptr<art::TetRayCaster> caster;
+    art::Image img;
+    art::RenderStats st;
+  };
+  std::vector<std::unique_ptr<Ours>> ours;
+  std::vector<Variant> variants{ { "ours exact, ERT 0.99", art::RenderSettings::Rule::Exact, 0.99 },
+    { "ours exact, no ERT", art::RenderSettings::Rule::Exact, 2.0 },
+    { "ours trapezoid, ERT 0.99", art::RenderSettings::Rule::Trapezoid, 0.99 },
+    { "ours exact, ERT 0.99, every tet", art::RenderSettings::Rule::Exact, 0.99, false } };
+  variants.resize(sc.mainOnly ? 1 : variants.size());
+  for (const Variant& v : variants)
+  {
+    art::RenderSettings s;
+    s.tf = sc.tf;
+    s.rule = v.rule;
+    s.earlyTermination = v.ert;
+    s.skipEmpty = v.skip; // "every tet": without empty-space skipping
+    ours.push_back(std::make_unique<Ours>());
+    Ours* o = ours.back().get();
+    o->caster = std::make_unique<art::TetRayCaster>(m, s);
+    const bool keep = v.ert < 1 && v.rule == art::RenderSettings::Rule::Exact && v.skip;
+    methods.push_back({ row(v.name),
+      [&sc, o] {
+        o->st = o->caster->Render(sc.camera, o->img);
+        return o->st.seconds;
+      },
+      [&sc, o, keep, file](Row& r) {
+        r.err = art::CompareImages(OverBlack(o->img), sc.ref);
+        r.tetsPerRay = o->st.counters.PerRay(o->st.counters.tetsCrossed);
+        r.nsPerTet = o->st.counters.tetsCrossed
+          ? r.seconds.median * 1e9 * art::GetThreadCount() / o->st.counters.tetsCrossed : 0;
+        if (keep)
+        {
+          art::WriteImage(OverBlack(o->img), sc.dir + "/tets-ours-" + file + ".png");
+        }
+      } });
+  }
+  vtkSmartPointer<vtkUnstructuredGrid> grid;
+  vtkNew<vtkUnstructuredGridVolumeRayCastMapper> bunyk;
+  vtkNew<vtkTetRayCastMapper> mapper;
+  std::unique_ptr<VTKWindow> bunykWin, mapperWin;
+  if (sc.vtk && static_cast<long long>(m.NumberOfTets()) <= sc.bunykMax)
+  {
+    grid = ToGrid(m);
+    bunyk->SetInputData(grid);
+    bunyk->SetAutoAdjustSampleDistances(0);
+    bunyk->SetImageSampleDistance(1.0f);
+    bunykWin = std::make_unique<VTKWindow>(bunyk, sc.prop, sc.cam, sc.W, sc.H);
+    methods.push_back({ row("VTK Bunyk (UG ray cast)"), [&] { return bunykWin->Frame(); },
+      [&](Row& r) {
+        const art::Image img = bunykWin->Read();
+        r.err = art::CompareImages(img, sc.ref);
+        art::WriteImage(img, sc.dir + "/tets-bunyk-" + file + ".png");
+      } });
+    // Ours the same way, mapper against mapper: window draw and read-back included.
+    mapper->SetInputData(grid);
+    mapper->SetAutoAdjustSampleDistances(0); // one ray a pixel, as Bunyk's
+    mapperWin = std::make_unique<VTKWindow>(mapper, sc.prop, sc.cam, sc.W, sc.H);
+    methods.push_back({ row("ours mapper in a window"), [&] { return mapperWin->Frame(); },
+      [&](Row& r) { r.err = art::CompareImages(mapperWin->Read(), sc.ref); } });
+  }
+  std::vector<std::function<double()>> frames;
+  for (const Method& method : methods)
+  {
+    frames.push_back(method.frame);
+  }
+  const std::vector<cli::BenchStats> times = cli::TimeInterleaved(sc.runs, frames);
+  for (std::size_t i = 0; i < methods.size(); ++i)
+  {
+    methods[i].row.seconds = times[i];
+    methods[i].finish(methods[i].row);
+    report(methods[i].row);
+  }
+}
+
+Row TimeFixedPoint(const Scene& sc, vtkImageData* volume, long long voxels)
+{
+  double spacing[3];
+  volume->GetSpacing(spacing);
+  vtkNew<vtkFixedPointVolumeRayCastMapper> fp;
+  fp->SetInputData(volume);
+  fp->SetAutoAdjustSampleDistances(0);
+  fp->SetImageSampleDistance(1.0f);
+  fp->SetSampleDistance(0.5 * std::min(spacing[0], std::min(spacing[1], spacing[2])));
+  VTKWindow win(fp, sc.prop, sc.cam, sc.W, sc.H);
+  Row r{ "VTK FixedPoint (voxels)", "voxels", "voxels", 0, voxels };
+  r.seconds = cli::TimeRuns(sc.runs, [&] { return win.Frame(); });
+  const art::Image img = win.Read();
+  r.err = art::CompareImages(img, sc.ref);
+  art::WriteImage(img, sc.dir + "/tets-fixedpoint.png");
+  return r;
 }
 
 int Run(const cli::Options& o)
 {
+  SeriesNames(o); // a usage error before any work
+  cli::TetBenchSetup setup;
   const std::string in = o.Get("tets-input");
-  const std::vector<std::string> seriesNames = SeriesNames(o); // a usage error before any work
   const std::string dir = o.Get("results");
-  const int runs = static_cast<int>(std::max(1LL, o.GetInt("runs")));
-  int W, H;
-  o.GetSize("tets-size", W, H);
+  setup.runs = static_cast<int>(std::max(1LL, o.GetInt("runs")));
+  o.GetSize("tets-size", setup.width, setup.height);
   std::filesystem::create_directories(dir);
   const bool vtk = !o.Flag("tets-no-vtk") && std::getenv("DISPLAY");
   if (!o.Flag("tets-no-vtk") && !vtk)
@@ -246,23 +449,22 @@ int Run(const cli::Options& o)
     std::fprintf(stderr, "bench tets: no DISPLAY, VTK's mappers skipped (run under xvfb-run -a)\n");
   }
 
-  auto volume = art::LoadVolume(in);
-  double range[2], b[6], spacing[3];
+  vtkSmartPointer<vtkImageData> volume = LoadBenchVolume(in, o.GetDouble("tets-resample"), setup);
+  double range[2], b[6];
   volume->GetPointData()->GetScalars()->GetRange(range);
   volume->GetBounds(b);
-  volume->GetSpacing(spacing);
-  int dims[3];
-  volume->GetDimensions(dims);
-  const long long voxels = static_cast<long long>(dims[0]) * dims[1] * dims[2];
-  const std::string tfName = o.Get("tets-tf");
+  setup.transferFunction = o.Get("tets-tf");
+  const std::string& tfName = setup.transferFunction;
   const art::TransferFunction tf = std::filesystem::exists(tfName) ? art::TransferFunction::FromFile(tfName)
     : art::TransferFunction::PresetFor(tfName, volume, range[0], range[1]);
+  setup.reduction = std::string(o.Flag("tets-plain-reduction") ? "plain L2 reduction" : "reduction weighted by its opacity") +
+    (o.Flag("tets-no-relocate") ? "" : ", vertices relocated");
   vtkNew<vtkCamera> cam;
   cam->SetPosition(0, -1, 0);
   cam->SetFocalPoint(0, 0, 0);
   cam->SetViewUp(0, 0, 1);
   art::Camera::Frame(cam, art::Box3::FromBounds(b), 30, 10, 1.0);
-  const art::Camera camera = art::Camera::FromVTK(cam, W, H);
+  const art::Camera camera = art::Camera::FromVTK(cam, setup.width, setup.height);
   vtkNew<vtkVolumeProperty> prop;
   tf.ToVTK(prop);
 
@@ -270,273 +472,34 @@ int Run(const cli::Options& o)
   std::fprintf(stderr, "reference (voxel caster) ...\n");
   art::Image refRaw;
   const auto refCaster = art::VoxelReferenceCaster::FromVTK(volume, tf, in);
-  const art::RenderStats refStats = refCaster.Render(camera, refRaw);
+  setup.referenceSeconds = refCaster.Render(camera, refRaw).seconds;
   const art::Image ref = OverBlack(refRaw);
   art::WriteImage(ref, dir + "/tets-reference.png");
 
-  // The meshes: each reduction series (one run of its levels) and full resolution.
-  struct MeshEntry
-  {
-    std::string name, series;
-    std::unique_ptr<art::TetMesh> mesh;
-    double rms = -1;
-  };
-  std::vector<MeshEntry> meshes;
-#ifdef ART_HAVE_Reduction
-  {
-    std::vector<long long> levels;
-    std::stringstream ss(o.Get("tets-levels"));
-    std::string item;
-    while (std::getline(ss, item, ','))
-    {
-      levels.push_back(std::stoll(item));
-    }
-    std::sort(levels.begin(), levels.end());
-    const art::VoxelVolume voxelVolume = art::VolumeFromImage(volume, in);
-    for (const std::string& series : seriesNames)
-    {
-      if (levels.empty())
-      {
-        break;
-      }
-      std::fprintf(stderr, "reducing to %zu budgets (%s) ...\n", levels.size(), series.c_str());
-      art::ReducerOptions ro;
-      ro.TargetTets = levels.back();
-      ro.Levels = levels;
-      ro.RelocateVertices = series == "relocated"; // as render reduces
-      if (series == "anisotropic")
-      {
-        ro.Refine = art::ReducerOptions::Refinement::Anisotropic;
-      }
-      if (!o.Flag("tets-plain-reduction"))
-      {
-        ro.ScalarOpacity = tf.OpacityPoints();
-      }
-      const std::string prefix = series == "anisotropic" ? "anisotropic " : "reduced ";
-      for (const auto& r : art::TetReducer(ro).Run(voxelVolume))
-      {
-        meshes.push_back({ prefix + std::to_string(r.NumberOfTets()), series,
-          std::make_unique<art::TetMesh>(cli::ToTetMesh(r)), r.Rms });
-      }
-    }
-  }
-#endif
-  std::fprintf(stderr, "full-resolution tets ...\n");
-  meshes.push_back({ "full resolution", "full", std::make_unique<art::TetMesh>(art::TetMesh::FromImage(volume, in)), 0.0 });
-
+  const Scene sc{ camera, cam, prop, tf, ref, dir, setup.width, setup.height, setup.runs, vtk,
+    o.Flag("tets-main-only"), o.GetInt("tets-bunyk-max") };
   std::vector<Row> rows;
   auto report = [&](const Row& r) {
     std::fprintf(stderr, "  %-22s %-18s %9lld tets  %8.3f s [%.3f-%.3f]  PSNR %6.2f dB  SSIM %.4f\n",
       r.method.c_str(), r.mesh.c_str(), r.tets, r.seconds.median, r.seconds.lo, r.seconds.hi, r.err.psnr, r.err.ssim);
     rows.push_back(r);
   };
-  // Per mesh, every method is timed in turn, a frame each per round (TimeInterleaved): this
-  // machine's speed drifts, and runs of one method after another would put the drift into the
-  // ratios.
-  for (const auto& me : meshes)
+  for (const MeshEntry& me : BuildMeshes(o, volume, in, tf))
   {
-    const art::TetMesh& m = *me.mesh;
-    const std::string file = [&] {
-      std::string f = me.name;
-      std::replace(f.begin(), f.end(), ' ', '-');
-      return f;
-    }();
-    struct Method
-    {
-      Row row;
-      std::function<double()> frame;
-      std::function<void(Row&)> finish; // error figures (and images) once timed
-    };
-    std::vector<Method> methods;
-    auto row = [&](const char* name) {
-      return Row{ name, me.name, me.series, static_cast<long long>(m.NumberOfTets()), static_cast<long long>(m.NumberOfPoints()) };
-    };
-    struct Variant
-    {
-      const char* name;
-      art::RenderSettings::Rule rule;
-      double ert;
-      bool skip = true;
-    };
-    struct Ours
-    {
-      std::unique_ptr<art::TetRayCaster> caster;
-      art::Image img;
-      art::RenderStats st;
-    };
-    std::vector<std::unique_ptr<Ours>> ours;
-    for (const Variant& v : { Variant{ "ours exact, ERT 0.99", art::RenderSettings::Rule::Exact, 0.99 },
-           Variant{ "ours exact, no ERT", art::RenderSettings::Rule::Exact, 2.0 },
-           Variant{ "ours trapezoid, ERT 0.99", art::RenderSettings::Rule::Trapezoid, 0.99 },
-           Variant{ "ours exact, ERT 0.99, every tet", art::RenderSettings::Rule::Exact, 0.99, false } })
-    {
-      art::RenderSettings s;
-      s.tf = tf;
-      s.rule = v.rule;
-      s.earlyTermination = v.ert;
-      s.skipEmpty = v.skip; // "every tet": without empty-space skipping
-      ours.push_back(std::make_unique<Ours>());
-      Ours* o = ours.back().get();
-      o->caster = std::make_unique<art::TetRayCaster>(m, s);
-      const bool keep = v.ert < 1 && v.rule == art::RenderSettings::Rule::Exact && v.skip;
-      methods.push_back({ row(v.name),
-        [&camera, o] {
-          o->st = o->caster->Render(camera, o->img);
-          return o->st.seconds;
-        },
-        [&, o, keep](Row& r) {
-          r.err = art::CompareImages(OverBlack(o->img), ref);
-          r.tetsPerRay = o->st.counters.PerRay(o->st.counters.tetsCrossed);
-          r.nsPerTet = o->st.counters.tetsCrossed
-            ? r.seconds.median * 1e9 * art::GetThreadCount() / o->st.counters.tetsCrossed : 0;
-          if (keep)
-          {
-            art::WriteImage(OverBlack(o->img), dir + "/tets-ours-" + file + ".png");
-          }
-        } });
-    }
-    vtkSmartPointer<vtkUnstructuredGrid> grid;
-    vtkNew<vtkUnstructuredGridVolumeRayCastMapper> bunyk;
-    vtkNew<vtkTetRayCastMapper> mapper;
-    std::unique_ptr<VTKWindow> bunykWin, mapperWin;
-    if (vtk && static_cast<long long>(m.NumberOfTets()) <= o.GetInt("tets-bunyk-max"))
-    {
-      grid = ToGrid(m);
-      bunyk->SetInputData(grid);
-      bunyk->SetAutoAdjustSampleDistances(0);
-      bunyk->SetImageSampleDistance(1.0f);
-      bunykWin = std::make_unique<VTKWindow>(bunyk, prop, cam, W, H);
-      methods.push_back({ row("VTK Bunyk (UG ray cast)"), [&] { return bunykWin->Frame(); },
-        [&](Row& r) {
-          const art::Image img = bunykWin->Read();
-          r.err = art::CompareImages(img, ref);
-          art::WriteImage(img, dir + "/tets-bunyk-" + file + ".png");
-        } });
-      // Ours the same way, mapper against mapper: window draw and read-back included.
-      mapper->SetInputData(grid);
-      mapper->SetAutoAdjustSampleDistances(0); // one ray a pixel, as Bunyk's
-      mapperWin = std::make_unique<VTKWindow>(mapper, prop, cam, W, H);
-      methods.push_back({ row("ours mapper in a window"), [&] { return mapperWin->Frame(); },
-        [&](Row& r) { r.err = art::CompareImages(mapperWin->Read(), ref); } });
-    }
-    std::vector<std::function<double()>> frames;
-    for (const Method& method : methods)
-    {
-      frames.push_back(method.frame);
-    }
-    const std::vector<cli::BenchStats> times = cli::TimeInterleaved(runs, frames);
-    for (std::size_t i = 0; i < methods.size(); ++i)
-    {
-      methods[i].row.seconds = times[i];
-      methods[i].finish(methods[i].row);
-      report(methods[i].row);
-    }
+    TimeMesh(sc, me, report);
   }
   if (vtk)
   {
-    vtkNew<vtkFixedPointVolumeRayCastMapper> fp;
-    fp->SetInputData(volume);
-    fp->SetAutoAdjustSampleDistances(0);
-    fp->SetImageSampleDistance(1.0f);
-    fp->SetSampleDistance(0.5 * std::min(spacing[0], std::min(spacing[1], spacing[2])));
-    VTKWindow win(fp, prop, cam, W, H);
-    Row r{ "VTK FixedPoint (voxels)", "voxels", "voxels", 0, voxels };
-    r.seconds = cli::TimeRuns(runs, [&] { return win.Frame(); });
-    const art::Image img = win.Read();
-    r.err = art::CompareImages(img, ref);
-    report(r);
-    art::WriteImage(img, dir + "/tets-fixedpoint.png");
+    report(TimeFixedPoint(sc, volume, setup.voxels));
   }
 
-  // JSON, markdown, chart.
-  const cli::RunInfo run = cli::ThisRun();
-  const std::string &src = run.source, &commit = run.commit, &cpu = run.cpu, &date = run.date;
-  std::vector<cli::Json> jr;
-  for (const Row& r : rows)
-  {
-    cli::Json j;
-    j.Set("method", r.method).Set("mesh", r.mesh).Set("series", r.series).Set("tets", r.tets).Set("vertices", r.vertices)
-      .Set("seconds", r.seconds.median).Set("seconds_min", r.seconds.lo).Set("seconds_max", r.seconds.hi)
-      .Set("psnr", r.err.psnr).Set("ssim", r.err.ssim).Set("rmse", r.err.rmse)
-      .Set("tets_per_ray", r.tetsPerRay).Set("ns_per_tet_crossed_per_thread", r.nsPerTet);
-    jr.push_back(j);
-  }
-  cli::Json js;
-  js.Set("benchmark", "tets").Set("input", in).Set("voxels", voxels).Set("width", W).Set("height", H)
-    .Set("transfer_function", tfName).Set("machine", cpu)
-    .Set("hardware_threads", static_cast<long long>(std::thread::hardware_concurrency()))
-    .Set("threads", art::GetThreadCount()).Set("date", date).Set("commit", commit).Set("runs", runs)
-    .Set("reference_seconds", refStats.seconds).Set("rows", jr);
   const std::string stem = dir + "/tets";
-  std::ofstream(stem + ".json") << js.Str() << "\n";
-
-  // Markdown with the ratios the issue asks for.
-  std::ostringstream md;
-  md << "# Tet ray casting: the CT head reduction series (" << W << " x " << H << ")\n\n"
-     << in << " (" << dims[0] << " x " << dims[1] << " x " << dims[2] << " voxels), transfer function " << tfName
-     << (o.Flag("tets-plain-reduction") ? " (plain L2 reduction" : " (reduction weighted by its opacity")
-     << "; series: " << o.Get("tets-series") << (o.Flag("tets-no-relocate") ? ", no relocation)" : ")")
-     << ", reference: voxel ray caster (trilinear, 2 samples/voxel, exact steps, no ERT; " << refStats.seconds
-     << " s). " << cpu << ", " << art::GetThreadCount() << " threads, commit " << commit << ", " << date
-     << ". Times: median of " << runs << " runs after a warm-up [min-max]; a mesh's methods are timed in turn, one frame each per round.\n\n"
-     << "| method | mesh | tets | vertices (% of voxels) | time s [min-max] | PSNR dB | SSIM | RMSE | tets/ray | ns/tet crossed/thread |\n"
-     << "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  char line[512];
-  for (const Row& r : rows)
-  {
-    std::snprintf(line, sizeof line, "| %s | %s | %lld | %lld (%.2f%%) | %.3f [%.3f-%.3f] | %.2f | %.4f | %.5f | %.1f | %.0f |\n",
-      r.method.c_str(), r.mesh.c_str(), r.tets, r.vertices, 100.0 * r.vertices / voxels, r.seconds.median,
-      r.seconds.lo, r.seconds.hi, r.err.psnr, r.err.ssim, r.err.rmse, r.tetsPerRay, r.nsPerTet);
-    md << line;
-  }
-  md << "\n## Ratios\n\n";
-  const Row* fullOurs = nullptr;
-  for (const Row& r : rows)
-  {
-    if (r.mesh == "full resolution" && r.method == "ours exact, ERT 0.99")
-    {
-      fullOurs = &r;
-    }
-  }
-  for (const Row& r : rows)
-  {
-    if (r.method.rfind("VTK Bunyk", 0) == 0)
-    {
-      for (const Row& q : rows)
-      {
-        if (q.mesh == r.mesh && q.method == "ours exact, ERT 0.99")
-        {
-          std::snprintf(line, sizeof line,
-            "- %s: ours %.2fx Bunyk's frame rate (%.3f s vs %.3f s), PSNR %.2f vs %.2f dB\n", r.mesh.c_str(),
-            r.seconds.median / q.seconds.median, q.seconds.median, r.seconds.median, q.err.psnr, r.err.psnr);
-          md << line;
-        }
-        if (q.mesh == r.mesh && q.method == "ours mapper in a window")
-        {
-          std::snprintf(line, sizeof line, "- %s, mapper against mapper (both in a window): %.2fx (%.3f s vs %.3f s)\n",
-            r.mesh.c_str(), r.seconds.median / q.seconds.median, q.seconds.median, r.seconds.median);
-          md << line;
-        }
-      }
-    }
-    if (fullOurs && r.method == "ours exact, ERT 0.99" && r.mesh != "full resolution")
-    {
-      std::snprintf(line, sizeof line,
-        "- %s (%.2f%% of the vertices): %.2fx faster than our full-resolution render, %.0f%% of its time, PSNR %.2f dB\n",
-        r.mesh.c_str(), 100.0 * r.vertices / voxels, fullOurs->seconds.median / r.seconds.median,
-        100.0 * r.seconds.median / fullOurs->seconds.median, r.err.psnr);
-      md << line;
-    }
-  }
-  FixedPointMatch(rows, voxels, md);
-  std::ofstream(stem + ".md") << md.str();
-  std::printf("%s", md.str().c_str());
-
-  cli::FinishResults(src + "/tests/benchmarks/tets_chart.py", stem);
+  std::printf("%s", cli::WriteTetBenchResults(stem, setup, rows).c_str());
+  cli::FinishResults(cli::ThisRun().source + "/tests/benchmarks/tets_chart.py", stem);
   return cli::ExitOk;
 }
 
 cli::BenchRegistrar reg({ "tets",
-  "the CT head reduction series cast cell by cell vs VTK's Bunyk and FixedPoint mappers (time vs PSNR)", Declare,
+  "a volume's reduction series cast cell by cell vs VTK's Bunyk and FixedPoint mappers (time vs PSNR)", Declare,
   Run });
 } // namespace
