@@ -142,9 +142,9 @@ inline void Trace(const FrameContext& fc, const Rule& rule, const TetWalker& w, 
   {
     TraceRay<Rule, CompositeMode::Maximum>(fc, rule, w, walker, r, start, entries, res, c, nudges, from);
   }
-  else if (!fc.S.isos.empty())
+  else if (!fc.S.isos.empty() || fc.S.shading.on)
   {
-    TraceRay<Rule, CompositeMode::VolumeIsos>(fc, rule, w, walker, r, start, entries, res, c, nudges, from);
+    TraceRay<Rule, CompositeMode::VolumeLit>(fc, rule, w, walker, r, start, entries, res, c, nudges, from);
   }
   else
   {

@@ -1,7 +1,8 @@
 // SegmentCompositor: what the face-to-face walk does with each tet it crosses (Grosso, Luerig &
 // Ertl 1997, sec. 5): the ray's segment in the tet, cut where the ray starts (a clipping plane or
 // a ray from inside the box) or ends (opaque geometry in the scene), then composited front to
-// back by the segment rule, with the iso-surfaces it crosses, or its largest scalar kept for a
+// back by the segment rule, with the iso-surfaces it crosses and the volume shaded (Phong with a
+// headlight through the tet's own gradient, as VTK's ShadeOn), or its largest scalar kept for a
 // maximum-intensity projection; false ends the walk (early ray termination, the ray's end). The
 // modes are template parameters, so the walk carries no test for a mode it is not in.
 #ifndef art_SegmentCompositor_h
@@ -22,7 +23,7 @@ namespace art
 enum class CompositeMode
 {
   Volume,     ///< emission-absorption
-  VolumeIsos, ///< emission-absorption with iso-surfaces
+  VolumeLit,  ///< emission-absorption with iso-surfaces, volume shading or both
   Maximum     ///< maximum intensity
 };
 
@@ -59,7 +60,7 @@ public:
     else
     {
       const double len = (ex.t - in.t) * DirLen;
-      if constexpr (Mode == CompositeMode::VolumeIsos)
+      if constexpr (Mode == CompositeMode::VolumeLit)
       {
         WithIsoHits(t, in, ex, len);
       }
@@ -113,7 +114,7 @@ private:
     for (int k = 0; k < hits.n; ++k)
     {
       const IsoSurface& iso = S.isos[hits.index[k]];
-      R.Integrate(sa, iso.value, len * (hits.fraction[k] - fa), Acc);
+      Lit(t, sa, iso.value, len * (hits.fraction[k] - fa));
       fa = hits.fraction[k];
       sa = iso.value;
       const double tHit = in.t + fa * (ex.t - in.t);
@@ -131,7 +132,34 @@ private:
         Res.firstIso = tHit;
       }
     }
-    R.Integrate(sa, ex.s, len * (1.0 - fa), Acc);
+    Lit(t, sa, ex.s, len * (1.0 - fa));
+  }
+
+  /// The segment from scalar s0 to s1 in tet t, shaded when asked. The tet's gradient is one
+  /// vector, so the light's factors are constant over the segment: its colour is
+  /// (ka + kd |n.v|) C + ks |n.v|^p W, whose integral is that factor times the unlit segment's
+  /// colour plus the specular weight times the opacity it adds (exact under either rule). A tet
+  /// with no gradient (a constant field) gets the ambient term only.
+  void Lit(int t, double s0, double s1, double len)
+  {
+    if (!S.shading.on)
+    {
+      R.Integrate(s0, s1, len, Acc);
+      return;
+    }
+    const double rgb0[3] = { Acc.rgb[0], Acc.rgb[1], Acc.rgb[2] }, T0 = Acc.T;
+    R.Integrate(s0, s1, len, Acc);
+    const auto& ip = M.Interpolant(t);
+    const Vec3 g(ip[1], ip[2], ip[3]);
+    const double gl = Length(g);
+    const double nv = gl > 0.0 ? std::fabs(Dot(g, View)) / gl : 0.0; // the light is at the eye
+    const RenderSettings::Shading& sh = S.shading;
+    const double a = sh.ambient + sh.diffuse * nv;
+    const double spec = nv > 0.0 ? sh.specular * std::pow(nv, sh.power) * (T0 - Acc.T) : 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      Acc.rgb[k] = rgb0[k] + a * (Acc.rgb[k] - rgb0[k]) + spec;
+    }
   }
 
   const TetMesh& M;

@@ -43,6 +43,13 @@ struct RenderSettings
   double earlyTermination = 0.99; ///< stop when opacity reaches this (>= 1: never)
   std::vector<IsoSurface> isos;
   double ambient = 0.3, diffuse = 0.7; ///< headlight shading of iso-surfaces
+  /// Shading of the volume itself (vtkVolumeProperty::ShadeOn): a headlight, two-sided, through
+  /// each tet's gradient, Blinn-Phong with VTK's coefficients (and its defaults).
+  struct Shading
+  {
+    bool on = false;
+    double ambient = 0.1, diffuse = 0.7, specular = 0.2, power = 10.0;
+  } shading;
   int tileSize = 16;
   /// Non-convex meshes: entry faces from the boundary triangles in the TriangleGrid's voxels along
   /// the ray (true) or from testing every face in the pixel's screen bucket (false).

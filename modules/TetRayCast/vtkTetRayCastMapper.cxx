@@ -371,6 +371,10 @@ bool vtkTetRayCastMapper::FrameSettings(vtkVolume* vol, Frame& f)
   s.mode = this->BlendMode == MAXIMUM_INTENSITY_BLEND ? art::RenderSettings::Mode::MaxIntensity
                                                       : art::RenderSettings::Mode::Composite;
   s.isos = this->Impl->Isos;
+  vtkVolumeProperty* p = vol->GetProperty();
+  s.shading.on = p->GetShade(0) != 0; // lit by a headlight, as a renderer with no lights of its own
+  s.shading.ambient = p->GetAmbient(0), s.shading.diffuse = p->GetDiffuse(0);
+  s.shading.specular = p->GetSpecular(0), s.shading.power = p->GetSpecularPower(0);
   s.clipPlanes = art::mapper::PlanesInData(this->ClippingPlanes, f.engineToWorld);
   // While a plane moves, each frame only cuts its rays; once it stands still, the tets it cuts
   // away also leave the walked region (a rebuild per change, worth it only for planes that stay).
@@ -505,12 +509,6 @@ void vtkTetRayCastMapper::WarnUnsupported(vtkVolumeProperty* p, vtkUnstructuredG
         << " components themselves) is not supported: one scalar of them (VectorMode) is drawn through "
            "the colour and opacity functions");
     }
-  }
-  if (p->GetShade(0) && !(this->Warned & 1))
-  {
-    this->Warned |= 1;
-    vtkWarningMacro("the vtkVolumeProperty's shading (ShadeOn) is not supported and is ignored; iso-surfaces "
-                    "(AddIsoSurface) are shaded");
   }
   bool gradient = p->GetTransferFunctionMode() == vtkVolumeProperty::TF_2D;
   if (!gradient && p->HasGradientOpacity(0) && !p->GetDisableGradientOpacity(0))

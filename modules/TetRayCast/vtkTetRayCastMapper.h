@@ -6,7 +6,8 @@
  * Luerig & Ertl 1997): rays walk face to face through the tets (Pluecker-consistent exits), each
  * segment is integrated exactly against the vtkVolumeProperty's colour and scalar-opacity
  * functions (ScalarOpacityUnitDistance honoured), iso-surfaces are shaded from interpolated
- * vertex gradients, and rays stop at the early-termination opacity. The image is computed on all
+ * vertex gradients, the volume itself (ShadeOn) from each tet's gradient by a headlight with the
+ * property's ambient, diffuse, specular and specular power, and rays stop at the early-termination opacity. The image is computed on all
  * cores at the renderer's size divided by ImageSampleDistance and drawn as a textured quad, like
  * VTK's own ray cast mappers. Non-tetrahedral cells are tetrahedralised first. The volume's
  * matrix is honoured: position, orientation and a uniform scale by casting in the data's
@@ -142,12 +143,12 @@ protected:
   double LastTetsCrossed = 0.0;
   int VectorMode = DISABLED;
   int VectorComponent = 0;
-  int Warned = 0; ///< unsupported settings already named: 1 shading, 2 gradient opacity,
+  int Warned = 0; ///< unsupported settings already named: 2 gradient opacity,
                  ///< 4 IndependentComponents off, 8 the camera's
 
   /**
    * Warns, once each, of property settings the mapper does not follow for `grid`'s scalars
-   * (shading, gradient opacity, IndependentComponents off on a multi-component array).
+   * (gradient opacity, IndependentComponents off on a multi-component array).
    */
   void WarnUnsupported(vtkVolumeProperty* p, vtkUnstructuredGrid* grid);
   /**

@@ -351,3 +351,50 @@ TEST(TetRayCast, RaysWithTheMeshOnlyBehindThemMissIt)
     EXPECT_GT(alpha, 16 * 16 * 0.1) << "mode " << int(mode);
   }
 }
+
+// Volume shading through a linear field: one gradient everywhere, and a parallel camera sees it
+// at one angle, so every pixel's lit colour is (ka + kd |n.v|) times the unlit colour plus
+// ks |n.v|^p times its opacity, for either rule, with and without early termination.
+TEST(TetRayCast, ShadingOfALinearFieldIsOneFactorAndOneSpecularWeight)
+{
+  const TetMesh m = fixtures::GridMesh(4, 3, 3, { 0, 0, 0 }, { 0.5, 0.5, 0.5 }, Linear, 6);
+  vtkNew<vtkCamera> vc;
+  vc->SetPosition(4, -3, 2.5);
+  vc->SetFocalPoint(1, 0.75, 0.75);
+  vc->SetViewUp(0, 0, 1);
+  vc->SetParallelProjection(1);
+  vc->SetParallelScale(1.6);
+  const Camera cam = Camera::FromVTK(vc, 40, 32);
+  const Vec3 view = Normalize(Vec3(1, 0.75, 0.75) - Vec3(4, -3, 2.5));
+  const Vec3 g(0.2, -0.1, 0.15); // Linear's gradient
+  const double nv = std::fabs(Dot(g, view)) / Length(g);
+  const TransferFunction tf({ { 0.0, { 0.1, 0.9, 0.3 }, 0.2, 0 }, { 0.5, { 0.8, 0.2, 0.6 }, 0.6, 0 },
+                              { 1.0, { 0.9, 0.9, 0.1 }, 0.4, 0 } },
+    0.5);
+  for (const auto rule : { RenderSettings::Rule::Exact, RenderSettings::Rule::Trapezoid })
+    for (const double ert : { 2.0, 0.9 })
+    {
+      RenderSettings s;
+      s.tf = tf, s.rule = rule, s.earlyTermination = ert;
+      Image plain, lit;
+      TetRayCaster(m, s).Render(cam, plain);
+      s.shading.on = true;
+      s.shading.ambient = 0.2, s.shading.diffuse = 0.6, s.shading.specular = 0.4, s.shading.power = 8;
+      TetRayCaster(m, s).Render(cam, lit);
+      const double a = 0.2 + 0.6 * nv, spec = 0.4 * std::pow(nv, 8.0);
+      double worst = 0, changed = 0;
+      for (int y = 0; y < cam.Height(); ++y)
+        for (int x = 0; x < cam.Width(); ++x)
+        {
+          const float *p = plain.Pixel(x, y), *l = lit.Pixel(x, y);
+          EXPECT_EQ(p[3], l[3]); // shading changes colour, not opacity
+          for (int k = 0; k < 3; ++k)
+          {
+            worst = std::max(worst, std::fabs(l[k] - (a * p[k] + spec * p[3])));
+            changed = std::max(changed, double(std::fabs(l[k] - p[k])));
+          }
+        }
+      EXPECT_LE(worst, 2e-6);
+      EXPECT_GT(changed, 0.05) << "the light changes the image";
+    }
+}
