@@ -36,6 +36,8 @@
 #include <vtkFixedPointVolumeRayCastMapper.h>
 #include <vtkImageData.h>
 #include <vtkImageResample.h>
+#include <vtkMatrix3x3.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -110,6 +112,8 @@ public:
     Win->SetSize(w, h);
     Win->AddRenderer(Ren);
   }
+  /// Places the volume by a matrix (its data then in index-aligned coordinates).
+  void Place(vtkMatrix4x4* m) { Vol->SetUserMatrix(m); }
   double Frame()
   {
     Vol->Modified(); // no cached image
@@ -420,12 +424,30 @@ Row TimeFixedPoint(const Scene& sc, vtkImageData* volume, long long voxels)
 {
   double spacing[3];
   volume->GetSpacing(spacing);
+  // VTK 9.1's FixedPoint ignores an image's direction matrix (a NIfTI's [-1 0 0; 0 -1 0; 0 0 1]
+  // drew the brain off screen): it gets the voxels at the origin, axis-aligned, and the volume the
+  // direction and origin as its matrix, so it draws where the reference does.
+  vtkNew<vtkImageData> aligned;
+  aligned->ShallowCopy(volume);
+  aligned->SetOrigin(0, 0, 0);
+  aligned->SetDirectionMatrix(1, 0, 0, 0, 1, 0, 0, 0, 1);
+  vtkNew<vtkMatrix4x4> place;
+  const double* o = volume->GetOrigin();
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      place->SetElement(r, c, volume->GetDirectionMatrix()->GetElement(r, c));
+    }
+    place->SetElement(r, 3, o[r]);
+  }
   vtkNew<vtkFixedPointVolumeRayCastMapper> fp;
-  fp->SetInputData(volume);
+  fp->SetInputData(aligned);
   fp->SetAutoAdjustSampleDistances(0);
   fp->SetImageSampleDistance(1.0f);
   fp->SetSampleDistance(0.5 * std::min(spacing[0], std::min(spacing[1], spacing[2])));
   VTKWindow win(fp, sc.prop, sc.cam, sc.W, sc.H);
+  win.Place(place);
   Row r{ "VTK FixedPoint (voxels)", "voxels", "voxels", 0, voxels };
   r.seconds = cli::TimeRuns(sc.runs, [&] { return win.Frame(); });
   const art::Image img = win.Read();
