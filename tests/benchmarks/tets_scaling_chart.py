@@ -1,4 +1,5 @@
-"""Scaling table and chart of `adaptivert bench tets` over several volumes (tets_scaling.sh):
+"""Scaling table and chart of `adaptivert bench tets` over several volumes (tets_scaling.sh;
+usage: tets_scaling_chart.py OUT [FOLDER...]):
 per volume, render time against PSNR of our exact caster on each mesh series, FixedPoint as a
 point, and the smallest mesh reaching FixedPoint's PSNR with its speed-up."""
 import json
@@ -10,16 +11,16 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-out = sys.argv[1]
+out = sys.argv[1]  # then, optionally, the result folders to take, in order
 runs = []
-for name in ["ct128", "ct256", "ct512", "brain"]:
+for name in sys.argv[2:] or ["ct128", "ct256", "ct512", "brain"]:
     path = os.path.join(out, name, "tets.json")
     if os.path.exists(path):
         runs.append((name, json.load(open(path))))
 if not runs:
     sys.exit("tets_scaling_chart.py: no tets.json under " + out)
 
-lines = ["# Tet ray casting against FixedPoint, four volume sizes", "",
+lines = ["# Tet ray casting against FixedPoint across volume sizes", "",
          "Per volume: FixedPoint (voxels) and the smallest mesh of each series drawn by `ours exact, ERT 0.99` "
          "that reaches FixedPoint's PSNR against the voxel reference; ratio = FixedPoint's time / ours. "
          "Bunyk = VTK's UG ray cast on the same mesh.", "",
@@ -47,7 +48,8 @@ for ax, (name, d) in zip(axes[0], runs):
     series = sorted({r["series"] for r in rows if r["method"] == "ours exact, ERT 0.99"})
     for s in series:
         pts = sorted((r for r in rows if r["series"] == s and r["method"] == "ours exact, ERT 0.99"), key=lambda r: r["tets"])
-        ax.plot([r["seconds"] for r in pts], [r["psnr"] for r in pts], marker="o", label="ours, " + s)
+        colour = {"reduced": "tab:orange", "full resolution": "tab:blue"}.get(s, "tab:green")
+        ax.plot([r["seconds"] for r in pts], [r["psnr"] for r in pts], marker="o", color=colour, label="ours, " + s)
         for r in pts:
             lab = "full" if s == "full resolution" else "%dk" % (r["tets"] // 1000)
             ax.annotate(lab, (r["seconds"], r["psnr"]), fontsize=7, xytext=(3, 3), textcoords="offset points")
@@ -63,6 +65,7 @@ for ax, (name, d) in zip(axes[0], runs):
     ax.set_xlabel("time per frame, s (log; loaded machine)")
     ax.grid(True, which="both", alpha=0.3)
 axes[0][0].set_ylabel("PSNR against the voxel reference, dB")
-axes[0][0].legend(fontsize=7)
+for ax in axes[0]:
+    ax.legend(fontsize=7)
 fig.tight_layout()
 fig.savefig(os.path.join(out, "scaling.png"), dpi=100)
