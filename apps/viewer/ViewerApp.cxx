@@ -305,6 +305,7 @@ void ViewerApp::Internals::ApplySettings()
 {
   Mapper->SetEarlyRayTermination(State.Ert());
   Mapper->SetTrapezoidRule(State.Trapezoid);
+  Volume->GetProperty()->SetShade(State.Shade ? 1 : 0);
   Mapper->RemoveAllIsoSurfaces();
   if (State.Iso)
   {

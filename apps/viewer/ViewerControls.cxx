@@ -60,6 +60,9 @@ KeyResult ApplyKey(ViewerState& s, char key, int levels)
     case 'x':
       s.Trapezoid = !s.Trapezoid;
       return KeyResult::Changed;
+    case 'l':
+      s.Shade = !s.Shade;
+      return KeyResult::Changed;
     case 'm':
       s.Edges = !s.Edges;
       return KeyResult::Changed;
@@ -105,6 +108,7 @@ std::string HelpText(const ViewerState& s, bool volume)
     os << "t        early termination: " << (s.Ert() >= 1.0 ? std::string("off") : std::to_string(s.Ert()).substr(0, 4))
        << "\n";
     os << "x        integrator: " << (s.Trapezoid ? "trapezoid" : "exact") << "\n";
+    os << "l        lighting (shade): " << (s.Shade ? "on" : "off") << "\n";
     os << "m        mesh edges: " << (s.Edges ? "on" : "off") << "\n";
     os << "c        clipping plane: " << (s.Clip ? "on (drag it)" : "off") << "\n";
   }

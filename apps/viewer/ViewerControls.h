@@ -21,6 +21,7 @@ struct ViewerState
   double IsoLo = -1e300, IsoHi = 1e300;
   int ErtIndex = 0;         ///< into ErtSteps()
   bool Trapezoid = false;
+  bool Shade = false;       ///< light the volume by its gradient (vtkVolumeProperty::ShadeOn)
   bool Edges = false;
   bool Clip = false;        ///< a clipping plane widget cuts the volume
   bool Help = true;

@@ -75,6 +75,9 @@ void Declare(cli::Options& o)
   o.Add("ert", 0, "A", "early ray termination at this opacity (1 = off)", "0.99");
   o.Add("integrator", 0, "RULE", "segment rule: exact or trapezoid (the paper's)", "exact");
   o.Add("mip", 0, "", "maximum-intensity projection instead of emission-absorption");
+  o.Add("shade", 0, "", "light the volume by its gradient, as vtkVolumeProperty::ShadeOn does (a headlight; "
+    "ambient 0.1, diffuse 0.7, specular 0.2, power 10); the voxel reference does not shade, so its error "
+    "figures are left out (--error exact compares with the mesh's own exact render)");
   o.Add("tets", 0, "N", "reduce a volume to about N adaptive tets first (or N% of the voxel count); without "
     "--tets or --max-error a volume is cast through its full-resolution tets (5 per voxel cell)");
   o.Add("max-error", 0, "E",
@@ -123,6 +126,10 @@ void RefuseContradictions(const cli::Options& o)
         throw cli::UsageError(std::string("--reference renders the full-resolution voxels; --") + reducing +
           " (which reduces them first) does not apply to it");
       }
+    }
+    if (o.Flag("shade"))
+    {
+      throw cli::UsageError("--shade: the voxel reference does not shade; render the volume's tets instead");
     }
   }
 }
@@ -213,6 +220,7 @@ art::RenderSettings MakeSettings(const cli::Options& o, art::TransferFunction tf
   {
     s.mode = art::RenderSettings::Mode::MaxIntensity;
   }
+  s.shading.on = o.Flag("shade");
   if (o.Has("iso"))
   {
     std::stringstream ss(o.Get("iso"));
@@ -477,7 +485,7 @@ struct Frame
 // Casts the scene and, unless --no-error, its reference: --error's (an image, a volume's voxels,
 // or the exact rule on the mesh), else a volume's own voxels. A mesh has no reference unless
 // asked for one: its own exact render would score how it is drawn, not what it models.
-Frame CastWithReference(const cli::Options& o, const std::string& input, const Scene& sc, const art::Camera& cam,
+Frame CastWithReference(const cli::Options& o, const std::string& input, Scene& sc, const art::Camera& cam,
   const std::array<float, 3>& background, art::Progress& progress)
 {
   Frame f;
@@ -495,7 +503,14 @@ Frame CastWithReference(const cli::Options& o, const std::string& input, const S
   {
     return f;
   }
-  const std::string ref = o.Has("error") ? o.Get("error") : sc.volume ? std::string() : std::string("none");
+  std::string ref = o.Has("error") ? o.Get("error") : sc.volume ? std::string() : std::string("none");
+  if (sc.settings.shading.on && ref != "exact" && !art::IsImageExtension(ref) && ref != "none")
+  {
+    // Against unlit voxels every lit pixel would count as error.
+    AddNote(sc.note, "no error figures: the voxel reference does not shade (--error exact compares with the "
+                     "mesh's own exact render)");
+    ref = "none";
+  }
   if (ref.empty() && sc.volume)
   {
     f.rst = art::VoxelReferenceCaster::FromVTK(sc.volume, sc.settings, input).Render(cam, f.ref, &progress);

@@ -178,7 +178,11 @@ TEST(ViewerControls, SettingsKeys)
   EXPECT_TRUE(s.Edges);
   EXPECT_EQ(ApplyKey(s, 'c', 1), KeyResult::Changed);
   EXPECT_TRUE(s.Clip);
+  EXPECT_FALSE(s.Shade);
+  EXPECT_EQ(ApplyKey(s, 'l', 1), KeyResult::Changed);
+  EXPECT_TRUE(s.Shade);
   const std::string help = HelpText(s, true);
+  EXPECT_NE(help.find("lighting (shade): on"), std::string::npos) << help;
   EXPECT_NE(help.find("integrator: trapezoid"), std::string::npos) << help;
   EXPECT_NE(help.find("mesh edges: on"), std::string::npos) << help;
   EXPECT_NE(help.find("clipping plane: on"), std::string::npos) << help;
