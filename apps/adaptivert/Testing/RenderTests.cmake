@@ -296,8 +296,8 @@ art_expect_test(cli.render_tets_anisotropic EXIT 0
   --refinement anisotropic --plain-reduction -q)
 # --shade lights the volume by its gradient (vtkVolumeProperty::ShadeOn); the unlit voxel reference
 # gives no error figures then, and --reference refuses it.
-art_render_baseline_test(image.render_shade BASELINE tets-shade-brain-like.png MIN_PSNR 40 MIN_SSIM 0.98
-  ARGS "${_synthetic}/brain-like.vti" --size 120x120 --azimuth 30 --shade)
+art_render_baseline_test(image.render_shade BASELINE tets-shade-ct-head.png MIN_PSNR 40 MIN_SSIM 0.98
+  ARGS "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" --size 160x160 --azimuth 30 --shade)
 art_expect_test(cli.render_shade_no_voxel_error EXIT 0 STDOUT "no error figures: the voxel reference does not shade"
   ARGS render "${_synthetic}/brain-like.vti" -o "${ART_TEST_OUTPUT}/shade.png" --size 32x32 --shade)
 art_expect_test(cli.render_shade_reference EXIT 2 STDERR "--shade: the voxel reference does not shade" ONE_LINE_STDERR

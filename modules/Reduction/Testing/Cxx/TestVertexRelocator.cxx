@@ -268,7 +268,7 @@ TEST(VertexRelocator, ReportsItsProgressAndCanBeCancelled)
   }
   EXPECT_EQ(relocated, 1.0);
   EXPECT_GT(relocateReports, 2);
-  EXPECT_EQ(seen.back().first, "reduce") << "the reduction's own stage ends the run";
+  EXPECT_EQ(seen.back().first, "refit") << "the refit after relocation ends the run";
   EXPECT_EQ(seen.back().second, 1.0);
 
   art::Progress cancel([&](double, const std::string& stage) {
