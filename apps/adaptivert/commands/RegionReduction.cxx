@@ -4,6 +4,7 @@
 
 #include "cli/Command.h"
 #include "cli/Json.h"
+#include "cli/LoadOptions.h"
 #include "cli/ProgressBar.h"
 #include "DataLoader.h"
 #include "Error.h"
@@ -184,6 +185,9 @@ void DeclareRegionOptions(Options& o)
   o.Add("labels", 0, "", "the input is a label map: one conforming mesh of every label, cell array 'label', "
     "interfaces shared (CGAL Mesh_3; with --tets)");
   o.Add("background", 0, "N", "with --labels: the label left unmeshed", "0");
+  o.Add("values", 0, "IMAGE",
+    "with --labels: a volume of the same dimensions (an MRI beside its segmentation) whose values the label mesh "
+    "carries, fitted in the least-squares sense inside the labels");
   o.Add("min-island", 0, "N",
     "with --region or --labels: connected pieces of fewer voxels are dropped (default: 27 or 0.01% of the region)");
   o.Add("no-whole-box", 0, "",
@@ -195,7 +199,7 @@ bool WantsRegion(const Options& o)
   const bool region = o.Has("region"), labels = o.Flag("labels");
   if (!region && !labels)
   {
-    for (const char* only : { "background", "min-island", "no-whole-box" })
+    for (const char* only : { "background", "min-island", "no-whole-box", "values" })
     {
       if (o.Has(only))
       {
@@ -211,6 +215,10 @@ bool WantsRegion(const Options& o)
   if (labels && o.Has("max-error"))
   {
     throw UsageError("--labels meshes a label map to --tets N; --max-error bounds a fit it does not make");
+  }
+  if (region && o.Has("values"))
+  {
+    throw UsageError("--values goes with --labels (a region's values are the input's own)");
   }
   if (labels && o.Has("no-whole-box"))
   {
@@ -267,6 +275,18 @@ int RunRegionReduction(const Options& o, const std::string& in, const std::strin
     }
     ro.Lo = std::max(ro.Lo, volume.Range[0] - 1.0);
     ro.Hi = std::min(ro.Hi, volume.Range[1] + 1.0);
+  }
+  art::VoxelVolume values;
+  if (o.Has("values"))
+  {
+    const std::string file = o.Get("values");
+    art::LoadOptions load = cli::LoadOptionsFrom(o);
+    load.Array.clear(); // --array and the raw layout describe the label map, not the values
+    load.Raw = {};
+    auto vimg = art::LoadVolume(file, load);
+    art::RequireOneComponent(vimg, file);
+    values = art::VolumeFromImage(vimg, file);
+    ro.Values = &values;
   }
   ro.Background = o.GetInt("background");
   ro.MinIslandVoxels = o.Has("min-island") ? o.GetInt("min-island") : -1;
