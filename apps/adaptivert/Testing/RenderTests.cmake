@@ -294,6 +294,11 @@ art_expect_test(cli.render_tets_anisotropic EXIT 0
   STDOUT "least-squares reduction, anisotropic \\(MMG3D\\), RMS error [0-9.]+.*: (1[89][0-9][0-9]|20[0-9][0-9]) tets.*error +PSNR [0-9.]+ dB"
   ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/aniso.png" --size 48x48 --tets 2000
   --refinement anisotropic --plain-reduction -q)
+# The anisotropic mesh's long, thin tets (slivers down to a few degrees) walked face to face without
+# the stability fallback once, over every ray of a 200 x 200 frame.
+art_expect_test(cli.render_tets_anisotropic_walk EXIT 0 STDOUT "\"tets_crossed\":[1-9][0-9]+,.*\"fallback_exits\":0[,}]"
+  ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/aniso-walk.png" --size 200x200 --tets 20000
+  --refinement anisotropic --json --no-error -q)
 # --shade lights the volume by its gradient (vtkVolumeProperty::ShadeOn); the unlit voxel reference
 # gives no error figures then, and --reference refuses it.
 art_render_baseline_test(image.render_shade BASELINE tets-shade-ct-head.png MIN_PSNR 40 MIN_SSIM 0.98
