@@ -4,6 +4,7 @@
 #include "Progress.h"
 #include "ReducerVTK.h"
 #include "SurfaceTetrahedralizer.h"
+#include "TriangleSurfaceVTK.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -16,7 +17,6 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkTriangleFilter.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
@@ -27,33 +27,6 @@ vtkStandardNewMacro(vtkSurfaceTetrahedralizer);
 
 namespace
 {
-art::TriangleSurface SurfaceOf(vtkPolyData* poly)
-{
-  vtkNew<vtkTriangleFilter> tri;
-  tri->SetInputData(poly);
-  tri->PassVertsOff();
-  tri->PassLinesOff();
-  tri->Update();
-  vtkPolyData* t = tri->GetOutput();
-  art::TriangleSurface s;
-  s.Points.resize(3 * static_cast<size_t>(t->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < t->GetNumberOfPoints(); ++i)
-  {
-    t->GetPoint(i, &s.Points[3 * i]);
-  }
-  vtkCellArray* polys = t->GetPolys();
-  vtkIdType n;
-  const vtkIdType* ids;
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    if (n == 3)
-    {
-      s.Triangles.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
-    }
-  }
-  return s;
-}
-
 void AddField(vtkUnstructuredGrid* g, const char* name, double v)
 {
   vtkNew<vtkDoubleArray> a;
@@ -122,7 +95,7 @@ int vtkSurfaceTetrahedralizer::RequestData(vtkInformation*, vtkInformationVector
       vtkErrorMacro("Set TargetTets or MaxVolume.");
       return 0;
     }
-    const art::SurfaceMeshResult r = art::TetrahedralizeSurface(SurfaceOf(poly), o, "", &progress);
+    const art::SurfaceMeshResult r = art::TetrahedralizeSurface(art::TriangleSurfaceFromVTK(poly), o, "", &progress);
     output->ShallowCopy(art::ToUnstructuredGrid(r.Mesh, volume && volume->DoubleValues));
     this->SurfaceVolume = r.Surface.Volume;
     this->MeshVolume = r.MeshVolume;

@@ -1,5 +1,6 @@
 // adaptivert info FILE...: what a volume, surface or mesh holds.
 #include "ArrayChoice.h"
+#include "cli/NumberFormat.h"
 #include "cli/Command.h"
 #include "AtomicFile.h"
 #include "DataLoader.h"
@@ -32,19 +33,7 @@
 
 namespace
 {
-std::string Grouped(long long n)
-{
-  std::string s = std::to_string(n < 0 ? -n : n), o;
-  for (size_t i = 0; i < s.size(); ++i)
-  {
-    o += s[i];
-    if ((s.size() - 1 - i) % 3 == 0 && i + 1 < s.size())
-    {
-      o += ',';
-    }
-  }
-  return (n < 0 ? "-" : "") + o;
-}
+using cli::Grouped;
 
 // printf into a string, so the same code serves the text and the --json output.
 void Out(std::string& text, const char* fmt, ...) __attribute__((format(printf, 2, 3)));

@@ -1,5 +1,6 @@
 // adaptivert reduce IN OUT.vtu: the least-squares reducer from voxels to an adaptive tet grid
 // (AdaptiveRT::Reduction), to a tet budget or an error bound, optionally with levels on the way.
+#include "cli/NumberFormat.h"
 #include "cli/Command.h"
 
 #ifdef ART_HAVE_Reduction
@@ -35,19 +36,7 @@
 
 namespace
 {
-std::string Grouped(long long n)
-{
-  std::string s = std::to_string(n), o;
-  for (size_t i = 0; i < s.size(); ++i)
-  {
-    o += s[i];
-    if ((s.size() - 1 - i) % 3 == 0 && i + 1 < s.size())
-    {
-      o += ',';
-    }
-  }
-  return o;
-}
+using cli::Grouped;
 
 void Declare(cli::Options& o)
 {

@@ -2,6 +2,7 @@
 
 #ifdef ART_HAVE_Reduction
 
+#include "cli/NumberFormat.h"
 #include "cli/Command.h"
 #include "cli/Json.h"
 #include "cli/LoadOptions.h"
@@ -31,19 +32,7 @@ namespace cli
 {
 namespace
 {
-std::string Grouped(long long n)
-{
-  std::string s = std::to_string(n < 0 ? -n : n), o;
-  for (size_t i = 0; i < s.size(); ++i)
-  {
-    o += s[i];
-    if ((s.size() - 1 - i) % 3 == 0 && i + 1 < s.size())
-    {
-      o += ',';
-    }
-  }
-  return n < 0 ? "-" + o : o;
-}
+using cli::Grouped;
 
 // "LO:HI", either end may be left out (300: is 300 and above).
 void ParseRegion(const std::string& s, double& lo, double& hi)

@@ -3,6 +3,7 @@
 // --volume, the points carry the image's values (least-squares fit) and the tets where the fit
 // misses the voxels most are refined. The surface is checked first: one that is open, not
 // manifold or intersects itself is refused with the count of what is wrong.
+#include "cli/NumberFormat.h"
 #include "cli/Command.h"
 
 #include "Error.h"
@@ -16,6 +17,7 @@
 #include "ReducerVTK.h"
 #include "rendering/ReductionTargets.h"
 #include "SurfaceTetrahedralizer.h"
+#include "TriangleSurfaceVTK.h"
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -23,7 +25,6 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
-#include <vtkTriangleFilter.h>
 #include <vtkUnstructuredGrid.h>
 #endif
 
@@ -81,43 +82,7 @@ std::pair<std::string, std::string> InputAndOutput(const cli::Options& o)
 }
 
 #ifdef ART_HAVE_Meshing
-std::string Grouped(long long n)
-{
-  std::string s = std::to_string(n), g;
-  for (size_t i = 0; i < s.size(); ++i)
-  {
-    g += s[i];
-    if ((s.size() - 1 - i) % 3 == 0 && i + 1 < s.size())
-    {
-      g += ',';
-    }
-  }
-  return g;
-}
-
-art::TriangleSurface SurfaceOf(vtkPolyData* poly)
-{
-  vtkNew<vtkTriangleFilter> tri;
-  tri->SetInputData(poly);
-  tri->PassVertsOff();
-  tri->PassLinesOff();
-  tri->Update();
-  vtkPolyData* t = tri->GetOutput();
-  art::TriangleSurface s;
-  s.Points.resize(3 * static_cast<size_t>(t->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < t->GetNumberOfPoints(); ++i)
-  {
-    t->GetPoint(i, &s.Points[3 * i]);
-  }
-  vtkIdType n;
-  const vtkIdType* ids;
-  vtkCellArray* polys = t->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-  {
-    s.Triangles.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
-  }
-  return s;
-}
+using cli::Grouped;
 
 art::SurfaceMeshOptions MeshOptions(const cli::Options& o)
 {
@@ -211,7 +176,7 @@ int Run(const cli::Options& o)
   }
   cli::ProgressBar bar(o.Flag("quiet"));
   art::Progress progress(bar.Callback());
-  const art::SurfaceMeshResult r = art::TetrahedralizeSurface(SurfaceOf(poly), mo, in, &progress);
+  const art::SurfaceMeshResult r = art::TetrahedralizeSurface(art::TriangleSurfaceFromVTK(poly), mo, in, &progress);
   bar.Finish();
   auto grid = art::ToUnstructuredGrid(r.Mesh, volume && volume->DoubleValues);
   for (const auto& [name, v] : { std::pair<const char*, double>{ "surface_volume", r.Surface.Volume },
