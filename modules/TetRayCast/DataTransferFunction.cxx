@@ -16,12 +16,6 @@ namespace
 {
 using Node = TransferFunction::Node;
 
-// Tableau's ten categorical colours (ParaView's "Categorical" default holds the same idea):
-// neighbouring labels stay apart, and the cycle repeats past ten.
-constexpr double Palette[10][3] = { { 0.122, 0.467, 0.706 }, { 1.000, 0.498, 0.055 }, { 0.173, 0.627, 0.173 },
-  { 0.839, 0.153, 0.157 }, { 0.580, 0.404, 0.741 }, { 0.549, 0.337, 0.294 }, { 0.890, 0.467, 0.761 },
-  { 0.498, 0.498, 0.498 }, { 0.737, 0.741, 0.133 }, { 0.090, 0.745, 0.812 } };
-
 // Each label constant over the half-way points to its neighbours; the one background label (0, or
 // the lowest when it is the background) transparent.
 std::vector<Node> LabelNodes(const ScalarStatistics& s)
@@ -39,7 +33,7 @@ std::vector<Node> LabelNodes(const ScalarStatistics& s)
     Node a{ below + eps, { 0, 0, 0 }, 0.0, 0 };
     if (L[i] != background)
     {
-      const double* c = Palette[colour++ % 10];
+      const double* c = TransferFunction::CategoricalColour(colour++);
       a = Node{ below + eps, { c[0], c[1], c[2] }, LabelOpacity, 0 };
     }
     Node b = a;

@@ -53,6 +53,9 @@ public:
   /// ct-skin-bone when the range looks like CT, else grey-ramp (PresetFor looks at the samples).
   static TransferFunction Preset(const std::string& name, double lo, double hi, double unitDistance = 1.0);
   static std::vector<std::string> PresetNames();
+  /// The k-th colour (k >= 0, cycling) of the ten of Tableau's categorical palette, as ParaView's
+  /// categorical presets start: neighbouring labels stay apart.
+  static const double* CategoricalColour(long long k);
   /// Does the range [lo, hi] look like CT in Hounsfield units (air near -1000, bone above 500)?
   static bool LooksLikeHU(double lo, double hi) { return lo <= -500.0 && hi >= 500.0; }
   /// The unit distance a preset gets over data with scalar range [lo, hi] and mean sample spacing

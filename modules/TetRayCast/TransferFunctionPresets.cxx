@@ -124,6 +124,14 @@ TransferFunction TransferFunction::Preset(const std::string& name, double lo, do
   return Make(name, lo, hi, unitDistance, LooksLikeHU(lo, hi));
 }
 
+const double* TransferFunction::CategoricalColour(long long k)
+{
+  static constexpr double palette[10][3] = { { 0.122, 0.467, 0.706 }, { 1.000, 0.498, 0.055 },
+    { 0.173, 0.627, 0.173 }, { 0.839, 0.153, 0.157 }, { 0.580, 0.404, 0.741 }, { 0.549, 0.337, 0.294 },
+    { 0.890, 0.467, 0.761 }, { 0.498, 0.498, 0.498 }, { 0.737, 0.741, 0.133 }, { 0.090, 0.745, 0.812 } };
+  return palette[(k % 10 + 10) % 10];
+}
+
 namespace
 {
 // A categorical table for label maps: one node per integer label in [lo, hi] (the first 512), in
@@ -131,19 +139,16 @@ namespace
 // mesh's tets hold their label exactly, so no two labels' colours blend.
 std::vector<TransferFunction::Node> LabelNodes(double lo, double hi)
 {
-  static const double palette[10][3] = { { 0.12, 0.47, 0.71 }, { 1.0, 0.5, 0.05 }, { 0.17, 0.63, 0.17 },
-    { 0.84, 0.15, 0.16 }, { 0.58, 0.4, 0.74 }, { 0.55, 0.34, 0.29 }, { 0.89, 0.47, 0.76 }, { 0.5, 0.5, 0.5 },
-    { 0.74, 0.74, 0.13 }, { 0.09, 0.75, 0.81 } };
   std::vector<TransferFunction::Node> n;
   const double first = std::ceil(lo), last = std::min(std::floor(hi), first + 511);
   for (double k = first; k <= last; ++k)
   {
-    const auto& c = palette[static_cast<long long>(std::fabs(k)) % 10];
+    const double* c = TransferFunction::CategoricalColour(static_cast<long long>(std::fabs(k)));
     n.push_back({ k, { c[0], c[1], c[2] }, 0.5, 0 });
   }
   if (n.size() < 2) // no integer or one in the range: its colour over all of it
   {
-    const auto& c = palette[n.empty() ? 0 : static_cast<long long>(std::fabs(first)) % 10];
+    const double* c = TransferFunction::CategoricalColour(n.empty() ? 0 : static_cast<long long>(std::fabs(first)));
     n = { { lo, { c[0], c[1], c[2] }, 0.5, 0 }, { hi, { c[0], c[1], c[2] }, 0.5, 0 } };
   }
   return n;
