@@ -56,8 +56,17 @@ Box3 VisibleBounds(vtkImageData* image, const RenderSettings& s)
   image->GetExtent(e);
   std::vector<long long> count[3] = { std::vector<long long>(d[0]), std::vector<long long>(d[1]),
     std::vector<long long>(d[2]) };
+  // Each voxel's own opacity once; the neighbour tests below read it back.
+  const vtkIdType n = static_cast<vtkIdType>(d[0]) * d[1] * d[2];
+  std::vector<char> opaque(static_cast<std::size_t>(n));
+  for (vtkIdType v = 0; v < n; ++v)
+  {
+    const double x = a->GetComponent(v, 0);
+    opaque[static_cast<std::size_t>(v)] = Visible(s, x, x) ? 1 : 0;
+  }
   long long visible = 0;
   const bool isos = !s.isos.empty();
+  const vtkIdType step[3] = { 1, d[0], static_cast<vtkIdType>(d[0]) * d[1] };
   for (int k = 0; k < d[2]; ++k)
   {
     for (int j = 0; j < d[1]; ++j)
@@ -65,34 +74,26 @@ Box3 VisibleBounds(vtkImageData* image, const RenderSettings& s)
       const vtkIdType row = (static_cast<vtkIdType>(k) * d[1] + j) * d[0];
       for (int i = 0; i < d[0]; ++i)
       {
-        const double v = a->GetComponent(row + i, 0);
-        bool seen = Visible(s, v, v);
-        // An iso-surface between this voxel and a neighbour along +x, +y or +z.
-        if (!seen && isos)
-        {
-          seen = (i + 1 < d[0] && Visible(s, v, a->GetComponent(row + i + 1, 0))) ||
-            (j + 1 < d[1] && Visible(s, v, a->GetComponent(row + i + d[0], 0))) ||
-            (k + 1 < d[2] && Visible(s, v, a->GetComponent(row + i + static_cast<vtkIdType>(d[0]) * d[1], 0)));
-        }
-        else if (seen)
+        const vtkIdType at = row + i;
+        const int ijk[3] = { i, j, k };
+        bool seen = false;
+        if (opaque[static_cast<std::size_t>(at)])
         {
           // A visible voxel without a visible neighbour is noise (an MRI's hot voxels), not the object.
-          const vtkIdType step[3] = { 1, d[0], static_cast<vtkIdType>(d[0]) * d[1] };
-          const int at[3] = { i, j, k };
-          bool neighbour = false;
-          for (int axis = 0; axis < 3 && !neighbour; ++axis)
+          for (int axis = 0; axis < 3 && !seen; ++axis)
           {
-            for (int side = -1; side <= 1 && !neighbour; side += 2)
-            {
-              const int n = at[axis] + side;
-              if (n >= 0 && n < d[axis])
-              {
-                const double w = a->GetComponent(row + i + side * step[axis], 0);
-                neighbour = Visible(s, w, w);
-              }
-            }
+            seen = (ijk[axis] > 0 && opaque[static_cast<std::size_t>(at - step[axis])]) ||
+              (ijk[axis] + 1 < d[axis] && opaque[static_cast<std::size_t>(at + step[axis])]);
           }
-          seen = neighbour;
+        }
+        else if (isos)
+        {
+          // An iso-surface between this voxel and a neighbour along +x, +y or +z.
+          const double v = a->GetComponent(at, 0);
+          for (int axis = 0; axis < 3 && !seen; ++axis)
+          {
+            seen = ijk[axis] + 1 < d[axis] && Visible(s, v, a->GetComponent(at + step[axis], 0));
+          }
         }
         if (seen)
         {
