@@ -9,6 +9,7 @@
 #include "ParallelTiles.h"
 #include "Progress.h"
 #include "ReducedLevel.h"
+#include "VertexRelocator.h"
 
 #include <algorithm>
 #include <array>
@@ -275,6 +276,23 @@ void AnisotropicAdaptation::Calibrate(const AdaptationRound& r)
   BoundaryTets = std::max(0.0, (TetsPerVertexInside * r.Vertices - r.Tets) / (c * c));
 }
 
+int AnisotropicAdaptation::Relocate(BisectionMesh& mesh, LeastSquaresFit& fit, std::vector<double>& x) const
+{
+  // The metric aligns the tets with the voxels' curvature; relocation then moves each vertex to
+  // where its star fits the voxels best (VertexRelocator), as on the lattice. Thin tets are the
+  // point here, so a move may leave a tet at a twentieth of the regular quality where the
+  // lattice keeps a fifth.
+  RelocationOptions ro;
+  ro.Sweeps = Opt.RelocateSweeps;
+  ro.QualityFloor = std::min(Opt.RelocateQualityFloor, 0.05);
+  ro.MeasureSse = false;
+  VertexRelocator::Relocate(mesh, Volume, x, ro, Importance, Prog);
+  std::vector<int> all(static_cast<size_t>(mesh.NumberOfTets()));
+  std::iota(all.begin(), all.end(), 0);
+  fit.UpdateMoments(mesh, all);
+  return fit.Solve(mesh, x, Opt.SolverTolerance);
+}
+
 ReducedMesh AnisotropicAdaptation::Fit(const Mesh& m, long long tets) const
 {
   const size_t nv = m.Points.size() / 3, nt = m.Tets.size() / 4;
@@ -310,36 +328,35 @@ ReducedMesh AnisotropicAdaptation::Fit(const Mesh& m, long long tets) const
   }
   BisectionMesh mesh;
   mesh.InitFromTets(std::move(lattice), tv);
-  LeastSquaresFit fit(Volume, Opt.Regularization, Importance);
+  // The values are the plain L2 fit even when a transfer function weighs the reduction: its
+  // weights have already put the vertices where opacity changes (the metric), and a fit
+  // weighted again drew worse on every mesh measured, more so the finer the mesh.
+  LeastSquaresFit fit(Volume, Opt.Regularization, nullptr);
   std::vector<int> all(nt);
   std::iota(all.begin(), all.end(), 0);
-  fit.UpdateMoments(mesh, all, Importance ? &x : nullptr);
+  fit.UpdateMoments(mesh, all);
   int iterations = fit.Solve(mesh, x, Opt.SolverTolerance);
-  for (int k = 0; Importance && k < std::max(0, Opt.ReweighSteps); ++k)
+  const bool relocate = Opt.RelocateVertices && Volume.NumberOfVoxels() >= RelocateVoxelsPerTet * static_cast<double>(nt);
+  if (relocate)
   {
-    fit.Reweigh(mesh, x);
-    iterations += fit.Solve(mesh, x, Opt.SolverTolerance);
+    iterations += Relocate(mesh, fit, x);
   }
   const std::vector<double> y =
     OutputValues(mesh, fit, x, Opt.ClampToVoxels, Opt.CapOpacity ? Importance : nullptr);
-  ReducedMesh out = Snapshot(Volume, mesh, y, fit.VoxelErrors(mesh, y));
+  // The errors are judged as the reduction is weighted.
+  const LeastSquaresFit judge(Volume, Opt.Regularization, Importance);
+  ReducedMesh out = Snapshot(Volume, mesh, y, judge.VoxelErrors(mesh, y));
   out.TargetTets = tets;
   out.SolverIterations = iterations;
   out.RefinementLevels = static_cast<int>(History.size());
   out.Weighted = Importance != nullptr;
+  out.Relocated = relocate;
   return out;
 }
 
-ReducedMesh AnisotropicAdaptation::Adapt(long long tets, const std::function<void(double)>& done)
+AnisotropicAdaptation::Mesh AnisotropicAdaptation::Converge(
+  const Mesh& start, long long tets, const std::function<void(double)>& done)
 {
-  // A large first level is calibrated on a remeshing an eighth its size first.
-  if (History.empty() && tets >= 40000)
-  {
-    const long long proxy = tets / 8;
-    Remesh(UniformMesh(VerticesFor(proxy)), proxy, VerticesFor(proxy) / VerticesPerComplexity);
-    Calibrate(History.back());
-  }
-  const Mesh start = UniformMesh(VerticesFor(tets));
   // Remeshings of the same start until the count is within the tolerance: the tet count grows
   // with the complexity asked, but not smoothly on small meshes (the box's faces and the
   // longest edges set a floor, and MMG's collapses there move the count by a third at once).
@@ -400,6 +417,19 @@ ReducedMesh AnisotropicAdaptation::Adapt(long long tets, const std::function<voi
     ask = next;
   }
   Calibrate(History[bestRound]);
+  return best;
+}
+
+ReducedMesh AnisotropicAdaptation::Adapt(long long tets, const std::function<void(double)>& done)
+{
+  // A large first level is calibrated on a remeshing an eighth its size first.
+  if (History.empty() && tets >= 40000)
+  {
+    const long long proxy = tets / 8;
+    Remesh(UniformMesh(VerticesFor(proxy)), proxy, VerticesFor(proxy) / VerticesPerComplexity);
+    Calibrate(History.back());
+  }
+  const Mesh best = Converge(UniformMesh(VerticesFor(tets)), tets, done);
   ReducedMesh out = Fit(best, tets);
   if (done)
   {

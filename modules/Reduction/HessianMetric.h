@@ -22,7 +22,7 @@ struct MetricOptions
   double TensorSigma = 1.0;  ///< Gaussian smoothing of |H| (voxels; 0: none)
   double Exponent = 4;       ///< p of the L^p norm the metric is optimal for
   double Hmin = 0.7;         ///< shortest edge the metric asks for (voxels)
-  double Hmax = 48;          ///< longest edge (voxels)
+  double Hmax = 24;          ///< longest edge (voxels)
   double Floor = 1e-4;       ///< least eigenvalue of |H|, as a fraction of the scalar range per voxel^2
 };
 

@@ -156,6 +156,7 @@ void LatticeRefinement::Emit(long long budget, bool reached, int level)
   m.Weighted = Importance != nullptr;
   m.Refinement = Opt.Refine == ReducerOptions::Refinement::EdgeSplit ? "edge" : "bisection";
   m.Nested = !Opt.RelocateVertices;
+  m.Relocated = Opt.RelocateVertices;
   if (OnLevel)
   {
     OnLevel(m);

@@ -243,6 +243,7 @@ vtkSmartPointer<vtkUnstructuredGrid> ToUnstructuredGrid(const ReducedMesh& m, bo
     WriteSourceStatistics(fd, m.Source);
   }
   field("levels_nested", m.Nested ? 1.0 : 0.0);
+  field("vertices_relocated", m.Relocated ? 1.0 : 0.0);
   auto refinement = vtkSmartPointer<vtkStringArray>::New();
   refinement->SetName("refinement");
   refinement->InsertNextValue(m.Refinement);

@@ -79,7 +79,9 @@ struct ReducerOptions
   int ReweighSteps = 3;          ///< weighted fit: extra reweighting steps on the coarse mesh
   /// Each output level's vertices are moved off the lattice to lower their star's error
   /// (VertexRelocator), then the fit is solved again on the moved mesh. The refinement goes on
-  /// from the unmoved mesh, so levels are no longer nested.
+  /// from the unmoved mesh, so levels are no longer nested. Anisotropic: after the remeshing,
+  /// when its tets hold AnisotropicAdaptation::RelocateVoxelsPerTet voxels each or more, with
+  /// a quality floor of at most 0.05 (its tets are thin by design).
   bool RelocateVertices = false;
   int RelocateSweeps = 3;           ///< Gauss-Seidel sweeps of the relocation
   double RelocateQualityFloor = 0.2; ///< shape floor a moved tet keeps (VertexRelocator)
@@ -115,6 +117,7 @@ struct ReducedMesh
   std::string ScalarName;
   std::string Refinement = "bisection"; ///< how it was made: bisection, edge or anisotropic
   bool Nested = true; ///< each level's tets are unions of the next level's (not with relocation or anisotropic)
+  bool Relocated = false; ///< its vertices were moved by VertexRelocator
 
   long long NumberOfTets() const { return static_cast<long long>(Tets.size() / 4); }
   long long NumberOfVertices() const { return static_cast<long long>(Points.size() / 3); }

@@ -149,6 +149,7 @@ bool FromGrid(vtkUnstructuredGrid* g, art::ReducedMesh& m)
   m.RefinementLevels = static_cast<int>(Field(fd, "refinement_levels"));
   m.SolverIterations = static_cast<int>(Field(fd, "solver_iterations"));
   m.Nested = Field(fd, "levels_nested", 1.0) != 0.0;
+  m.Relocated = Field(fd, "vertices_relocated", 0.0) != 0.0;
   if (auto* r = vtkStringArray::SafeDownCast(fd->GetAbstractArray("refinement")))
   {
     m.Refinement = r->GetNumberOfValues() ? r->GetValue(0) : m.Refinement;
