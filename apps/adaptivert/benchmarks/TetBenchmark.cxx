@@ -155,8 +155,8 @@ void Declare(cli::Options& o)
   o.Add("tets-resample", 0, "F", "resample the volume by F along each axis first (trilinear; labelled so)", "1");
   o.Add("tets-levels", 0, "N,N..", "tet budgets of the reduction series (empty: none)", "10000,25000,50000,100000,250000");
   o.Add("tets-series", 0, "LIST",
-    "reduction series rendered side by side: relocated (render's lattice refinement), bisection (no relocation), "
-    "anisotropic (MMG3D)", "relocated,anisotropic");
+    "reduction series rendered side by side: relocated (relocated bisection), bisection (no relocation), "
+    "anisotropic (MMG3D, relocated as render's default reduces)", "relocated,anisotropic");
   o.Add("tets-meshes", 0, "FILE,FILE..", "a mesh series read from files (another reducer's meshes of the volume)");
   o.Add("tets-meshes-name", 0, "NAME", "name of the --tets-meshes series", "meshes");
   o.Add("tets-no-full", 0, "", "leave out the full-resolution tets (too large past ~50M tets)");
@@ -264,7 +264,7 @@ void AddReducedSeries(const cli::Options& o, vtkImageData* volume, const std::st
     art::ReducerOptions ro;
     ro.TargetTets = levels.back();
     ro.Levels = levels;
-    ro.RelocateVertices = series == "relocated"; // as render reduces
+    ro.RelocateVertices = series != "bisection"; // as render reduces
     if (series == "anisotropic")
     {
       ro.Refine = art::ReducerOptions::Refinement::Anisotropic;
