@@ -188,6 +188,51 @@ struct Candidate
   int Iterations = 0;
 };
 
+// The values at each vertex, interpolated trilinearly from the region's voxels among the eight
+// around it (all eight when none is inside): where the fit's regulariser anchors a tet that holds
+// few voxels, as many of a region mesher's tets do. Exact on a linear field, and near the data
+// where a single mean for the whole region is not.
+std::vector<double> VertexAnchors(const VoxelVolume& values, const RegionMask& mask, const LatticeMesh& mesh)
+{
+  const double S = static_cast<double>(BisectionMesh::Scale);
+  const int* d = values.Dims;
+  std::vector<double> x(mesh.Points.size());
+  for (size_t v = 0; v < x.size(); ++v)
+  {
+    const LatticePoint& p = mesh.Points[v];
+    const double q[3] = { p.x / S, p.y / S, p.z / S };
+    int i0[3];
+    double f[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      const double c = std::clamp(q[a], 0.0, static_cast<double>(d[a] - 1));
+      i0[a] = std::min(static_cast<int>(std::floor(c)), std::max(d[a] - 2, 0));
+      f[a] = d[a] > 1 ? c - i0[a] : 0.0;
+    }
+    double sum[2] = { 0, 0 }, weight[2] = { 0, 0 }; // [0] inside the region, [1] all eight
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      long long idx = 0;
+      double w = 1;
+      for (int a = 2; a >= 0; --a)
+      {
+        const int up = (corner >> a) & 1;
+        const int i = std::min(i0[a] + up, d[a] - 1);
+        idx = idx * d[a] + i;
+        w *= up ? f[a] : 1.0 - f[a];
+      }
+      const double value = values.Value(idx);
+      sum[1] += w * value, weight[1] += w;
+      if (mask.Inside[static_cast<size_t>(idx)])
+      {
+        sum[0] += w * value, weight[0] += w;
+      }
+    }
+    x[v] = weight[0] > 1e-9 ? sum[0] / weight[0] : sum[1] / weight[1];
+  }
+  return x;
+}
+
 void FitCandidate(const VoxelVolume& values, const RegionMask& mask, const RegionOptions& opt, bool fit, Candidate& c)
 {
   BisectionMesh bm;
@@ -208,6 +253,7 @@ void FitCandidate(const VoxelVolume& values, const RegionMask& mask, const Regio
   c.X.clear();
   if (fit)
   {
+    c.X = VertexAnchors(values, mask, c.Mesh);
     c.Iterations = lsf.Solve(bm, c.X, opt.SolverTolerance);
   }
   else

@@ -60,3 +60,13 @@ cubes = np.zeros((24, 24, 24), np.uint8)
 cubes[4:12, 4:20, 4:20] = 1
 cubes[12:20, 4:20, 4:20] = 2
 write_mha("cubes-24.mha", cubes, "label")
+
+# Two labels side by side (x < 12: 1, x >= 12: 2) over 4 .. 19 in y and z, and values that ramp
+# along z (10 z): each label's colour must brighten with z in its own hue, and a region of the
+# ramp is fitted exactly.
+halves = np.zeros((24, 24, 24), np.uint8)
+halves[4:20, 4:20, 4:12] = 1
+halves[4:20, 4:20, 12:20] = 2
+write_mha("halves-24.mha", halves, "label")
+z, y, x = np.mgrid[0:24, 0:24, 0:24]
+write_mha("halves-24-ramp.mha", (10.0 * z).astype(np.float32), "ramp")
