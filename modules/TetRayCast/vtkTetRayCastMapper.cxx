@@ -5,6 +5,7 @@
 #include "Camera.h"
 #include "Error.h"
 #include "MapperGrid.h"
+#include "MapperLabels.h"
 #include "Progress.h"
 #include "TetMesh.h"
 #include "TetRayCaster.h"
@@ -146,6 +147,7 @@ struct vtkTetRayCastMapper::Internals
   bool MeshRefused = false; ///< the build for MeshInput, MeshTime and MeshArray failed (said once)
   std::string LastError;    ///< FrameError's message while it repeats
   std::vector<art::IsoSurface> Isos;
+  std::unique_ptr<art::LabelMesh> Labels; ///< the mesh split per label (LabelColoring), else none
   std::vector<std::array<double, 4>> LastPlanes; ///< the last frame's clipping planes (engine coordinates)
   vtkSmartPointer<vtkImageData> Last = vtkSmartPointer<vtkImageData>::New();
   std::vector<unsigned char> Bytes;
@@ -158,10 +160,12 @@ vtkTetRayCastMapper::vtkTetRayCastMapper()
   // The OpenGL helper itself, not vtkRayCastImageDisplayHelper::New(): the factory override
   // needs the application to initialise vtkRenderingVolumeOpenGL2, and a library must not.
   this->Impl->Helper.TakeReference(vtkOpenGLRayCastImageDisplayHelper::New());
+  this->SetLabelArrayName("label");
 }
 
 vtkTetRayCastMapper::~vtkTetRayCastMapper()
 {
+  this->SetLabelArrayName(nullptr);
   delete this->Impl;
 }
 
@@ -205,6 +209,7 @@ struct vtkTetRayCastMapper::Frame
   vtkMatrix4x4* toWorld = nullptr;
   vtkNew<vtkMatrix4x4> engineToWorld, meshToEngine, toData; // the engine's mesh is meshToEngine * data
   bool similar = true; ///< toWorld is a rotation times one positive scale
+  bool labels = false;  ///< LabelColoring applies to this frame (if the grid has labels)
   art::RenderSettings settings;
   int vw = 1, vh = 1, w = 1, h = 1; ///< viewport and image sizes
   art::Image img;
@@ -261,6 +266,13 @@ bool vtkTetRayCastMapper::SelectScalars(Frame& f)
   {
     this->FrameError(error);
     return false;
+  }
+  // Label colouring needs the composite blend and no iso-surface (its scalars are per label).
+  f.labels = this->LabelColoring != LABEL_COLORING_OFF && this->LabelArrayName && *this->LabelArrayName &&
+    this->BlendMode == COMPOSITE_BLEND && this->Impl->Isos.empty();
+  if (f.labels)
+  {
+    f.key += std::string(" labels:") + std::to_string(this->LabelColoring) + ":" + this->LabelArrayName;
   }
   return true;
 }
@@ -322,7 +334,11 @@ bool vtkTetRayCastMapper::UpdateMesh(Frame& f)
     std::string note;
     I.Caster.reset();
     I.Mesh.reset();
-    vtkSmartPointer<vtkUnstructuredGrid> engineGrid = art::mapper::WithoutGhosts(f.engineGrid, f.grid);
+    I.Labels = f.labels ? art::mapper::SplitLabels(f.engineGrid, f.grid, this->LabelArrayName,
+                            this->LabelColoring == LABEL_COLORING_FLAT)
+                        : nullptr;
+    vtkSmartPointer<vtkUnstructuredGrid> engineGrid =
+      I.Labels ? vtkSmartPointer<vtkUnstructuredGrid>(I.Labels->Grid()) : art::mapper::WithoutGhosts(f.engineGrid, f.grid);
     if (engineGrid->GetNumberOfCells() == 0)
     {
       return false; // only ghosts: their own pieces draw them
@@ -344,6 +360,7 @@ bool vtkTetRayCastMapper::UpdateMesh(Frame& f)
     // Said once for this input: every frame (each camera move in ParaView) said it again.
     I.Caster.reset();
     I.Mesh.reset();
+    I.Labels.reset();
     I.MeshRefused = true;
     vtkErrorMacro(<< e.what());
   }
@@ -359,7 +376,8 @@ bool vtkTetRayCastMapper::FrameSettings(vtkVolume* vol, Frame& f)
   this->WarnUnsupported(vol->GetProperty(), f.grid);
   try
   {
-    s.tf = art::TransferFunction::FromVTK(vol->GetProperty());
+    s.tf = this->Impl->Labels ? art::mapper::LabelFunction(*this->Impl->Labels, vol->GetProperty())
+                              : art::TransferFunction::FromVTK(vol->GetProperty());
   }
   catch (const art::Error& e)
   {
@@ -541,6 +559,8 @@ void vtkTetRayCastMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IntermixIntersectingGeometry: " << this->IntermixIntersectingGeometry << "\n";
   os << indent << "VectorMode: " << this->VectorMode << " (component " << this->VectorComponent << ")\n";
   os << indent << "IsoSurfaces: " << this->Impl->Isos.size() << "\n";
+  os << indent << "LabelColoring: " << this->LabelColoring << " (labels in cell array '"
+     << (this->LabelArrayName ? this->LabelArrayName : "") << "')\n";
   os << indent << "LastRenderTime: " << this->LastRenderTime << "\n";
 }
 

@@ -24,7 +24,9 @@
  * vtkPiecewiseFunction) is drawn as grey. As VTK's own volume mappers, each frame fires
  * VolumeMapperRenderStartEvent, VolumeMapperRenderProgressEvent (call data: a double in [0, 1],
  * on the thread that called Render) and VolumeMapperRenderEndEvent; when the render window's
- * abort check says so (an interactor's pending event), the frame stops and is not drawn.
+ * abort check says so (an interactor's pending event), the frame stops and is not drawn. A label
+ * mesh (a cell array "label", as vtkAdaptiveTetReducer's SetLabels writes it) is drawn label by
+ * label (LabelColoring): the values inside each label in its own hue by default.
  */
 #ifndef vtkTetRayCastMapper_h
 #define vtkTetRayCastMapper_h
@@ -124,6 +126,34 @@ public:
   vtkGetMacro(VectorComponent, int);
   ///@}
 
+  enum LabelColoringType
+  {
+    LABEL_COLORING_OFF = 0,   ///< labels ignored: the selected scalars through the property's functions
+    LABEL_COLORING_FLAT = 1,  ///< each label's tets in the label's colour
+    LABEL_COLORING_VALUES = 2 ///< the selected point values inside each label, in its hue
+  };
+  ///@{
+  /**
+   * How a grid with a one-component cell array LabelArrayName (default "label") is drawn: split
+   * per label, so no two labels blend at their interface. LABEL_COLORING_VALUES (the default):
+   * each label's tets by its own functions of the selected point values: the property's
+   * SetLabelColor and SetLabelScalarOpacity (VTK's label-map functions) for a label that has
+   * them, else the property's colour and scalar-opacity functions in the label's categorical hue
+   * (each colour's luminance times the label's colour in Tableau's ten, as ParaView's categorical
+   * presets start). When the labels themselves are the selected scalars, or under
+   * LABEL_COLORING_FLAT, each label in one colour: the property's label colour at the label, else
+   * its categorical colour, half opaque per unit distance unless a label opacity says otherwise.
+   * LABEL_COLORING_OFF, maximum intensity and iso-surfaces draw the selected scalars as for any grid.
+   */
+  vtkSetClampMacro(LabelColoring, int, LABEL_COLORING_OFF, LABEL_COLORING_VALUES);
+  vtkGetMacro(LabelColoring, int);
+  void SetLabelColoringToOff() { this->SetLabelColoring(LABEL_COLORING_OFF); }
+  void SetLabelColoringToFlat() { this->SetLabelColoring(LABEL_COLORING_FLAT); }
+  void SetLabelColoringToValues() { this->SetLabelColoring(LABEL_COLORING_VALUES); }
+  vtkSetStringMacro(LabelArrayName);
+  vtkGetStringMacro(LabelArrayName);
+  ///@}
+
   void Render(vtkRenderer* ren, vtkVolume* vol) override;
   void ReleaseGraphicsResources(vtkWindow*) override;
 
@@ -143,6 +173,8 @@ protected:
   double LastTetsCrossed = 0.0;
   int VectorMode = DISABLED;
   int VectorComponent = 0;
+  int LabelColoring = LABEL_COLORING_VALUES;
+  char* LabelArrayName = nullptr;
   int Warned = 0; ///< unsupported settings already named: 2 gradient opacity,
                  ///< 4 IndependentComponents off, 8 the camera's
 
