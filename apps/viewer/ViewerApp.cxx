@@ -49,7 +49,7 @@ ViewerApp::ViewerApp(ViewerOptions options)
   }
   art::LoadOptions load = o.Load;
   load.Array = o.Array;
-  Impl->Scene = LoadScene(o.File, o.TransferFunction, load);
+  Impl->Scene = LoadScene(o.File, o.TransferFunction, load, o.LabelColours);
   Impl->Mapper->SetLabelColoring(vtkTetRayCastMapper::LABEL_COLORING_OFF); // the scene split the labels itself
   if (!Impl->Scene.Surface && !Impl->Scene.Image && !Impl->Scene.Note.empty())
   {

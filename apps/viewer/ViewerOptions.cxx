@@ -54,6 +54,9 @@ std::string UsageText()
          "                       labels in distinct colours), ct-skin-bone, ct-bone, grey-ramp,\n"
          "                       constant, labels, or a file of\n"
          "                       'scalar r g b opacity' lines or a ParaView preset .json (default auto)\n"
+         "  --label-colours MODE a label mesh (cell array 'label'): values (default: each label's colour,\n"
+         "                       brightness and opacity from the values it carries, if any), flat (each\n"
+         "                       label in its colour), off (the labels ignored)\n"
          "  --frame patient|vtk  place a volume in LPS patient coordinates (default) or as VTK's readers\n"
          "                       and ParaView do (origin and spacing)\n"
          "  --raw-dims X,Y,Z --raw-type T [--raw-spacing X,Y,Z --raw-header B --raw-endian little|big]\n"
@@ -102,7 +105,7 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
       a = a.substr(0, eq);
       inlineValue = true;
     }
-    static const char* withValue[] = { "--size", "--tets", "--refinement", "--array", "--tf", "--script",
+    static const char* withValue[] = { "--size", "--tets", "--refinement", "--array", "--tf", "--label-colours", "--script",
       "--screenshot", "--frame", "--raw-dims", "--raw-type", "--raw-spacing", "--raw-header", "--raw-endian",
       "--raw-components" };
     if (std::find(std::begin(withValue), std::end(withValue), a) == std::end(withValue))
@@ -192,6 +195,14 @@ ViewerOptions ParseOptions(const std::vector<std::string>& args)
         throw UsageError("--refinement is bisection, edge or anisotropic, got '" + value + "'");
       }
       o.Refinement = value;
+    }
+    else if (a == "--label-colours")
+    {
+      if (value != "values" && value != "flat" && value != "off")
+      {
+        throw UsageError("--label-colours is values, flat or off, got '" + value + "'");
+      }
+      o.LabelColours = value;
     }
     else if (a == "--array")
     {

@@ -29,6 +29,7 @@ struct ViewerOptions
   art::LoadOptions Load;         ///< --frame and a raw volume's --raw-* layout (Array is set on use)
   std::string TransferFunction = "auto";
   bool TfGiven = false;           ///< --tf was given (it applies to volumes and meshes only)
+  std::string LabelColours = "values"; ///< --label-colours: a label mesh's values, flat or off
   std::string Script;            ///< file of scripted actions (tests, demos)
   std::string Screenshot;        ///< take one after the script (or the reduction) and exit
   bool Help = false;

@@ -6,7 +6,7 @@
 #include "DataLoader.h"
 #include "Error.h"
 #include "TetMesh.h"
-#include "rendering/LabelMesh.h"
+#include "rendering/LabelColours.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -54,12 +54,15 @@ void ViewerScene::AddLevel(vtkSmartPointer<vtkUnstructuredGrid> grid, long long 
   LevelLabels.push_back(buf);
 }
 
-ViewerScene LoadScene(const std::string& file, const std::string& tf, const art::LoadOptions& load)
+ViewerScene LoadScene(
+  const std::string& file, const std::string& tf, const art::LoadOptions& load, const std::string& labelColours)
 {
   ViewerScene s;
   const std::string& array = load.Array;
   std::optional<art::TetMesh> mesh; // a mesh's used, merged points, for a preset's unit distance
   bool labels = false;              // a label mesh (cell array "label"), split per label
+  std::optional<art::LabelMesh> labelMesh;
+  vtkSmartPointer<vtkUnstructuredGrid> source; // a label mesh as read, before the split
   const art::DataKind kind = art::KindOf(file, load);
   vtkSmartPointer<vtkDataObject> data =
     kind == art::DataKind::Volume ? vtkSmartPointer<vtkDataObject>(art::LoadVolume(file, load)) : art::Load(file);
@@ -96,10 +99,15 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const art:
     vtkSmartPointer<vtkUnstructuredGrid> grid = vtkUnstructuredGrid::SafeDownCast(data);
     std::string note;
     s.ArrayName = art::AddComponentArray(grid, array, file); // NAME:magnitude, NAME:N
-    if (cli::IsLabelMesh(grid, s.ArrayName)) // each tet in its label's colour, as render draws it
+    // Each tet in its label's colour, and the values inside each label, as render draws them.
+    cli::LabelColouring mode = cli::LabelColouring::Values;
+    cli::ParseLabelColouring(labelColours, mode); // ParseOptions checked the word
+    labelMesh = cli::LabelMeshFor(grid, s.ArrayName, mode);
+    if (labelMesh)
     {
-      grid = cli::SplitByLabel(grid);
-      s.ArrayName = "label";
+      source = grid;
+      grid = labelMesh->Grid();
+      s.ArrayName = labelMesh->HasValues() ? "label_values" : "label";
       labels = true;
     }
     s.ArrayOnCells = !s.ArrayName.empty() && !grid->GetPointData()->GetArray(s.ArrayName.c_str()) &&
@@ -112,7 +120,8 @@ ViewerScene LoadScene(const std::string& file, const std::string& tf, const art:
     s.Note = note;
   }
   // A preset's unit distance follows the data (1 mm on CT in HU of mm voxels, else its sample spacing), as in render.
-  s.Transfer = tf.find_first_of("./") != std::string::npos
+  s.Transfer = labelMesh && labelMesh->HasValues() ? cli::LabelValuesFunction(*labelMesh, source, tf)
+    : tf.find_first_of("./") != std::string::npos
     ? art::TransferFunction::FromFile(tf)
     : art::TransferFunction::PresetFor(labels && tf == "auto" ? "labels" : tf, vtkDataSet::SafeDownCast(data),
         s.Range[0], s.Range[1], mesh ? &*mesh : nullptr);

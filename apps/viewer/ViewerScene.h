@@ -41,7 +41,8 @@ struct ViewerScene
 
 /// Loads `file` (volume, tet mesh or triangle scene) with the transfer-function preset `tf`.
 /// Throws art::Error naming the file for anything wrong with it.
-ViewerScene LoadScene(const std::string& file, const std::string& tf, const art::LoadOptions& load = {});
+ViewerScene LoadScene(const std::string& file, const std::string& tf, const art::LoadOptions& load = {},
+  const std::string& labelColours = "values");
 
 /// 12345 -> "12,345".
 std::string Grouped(long long n);

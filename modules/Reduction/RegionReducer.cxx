@@ -475,6 +475,10 @@ RegionResult ReduceRegion(const VoxelVolume& volume, const RegionOptions& opt, c
     progress->End();
   }
   res.Mesh = Output(volume, values, best, fit);
+  if (opt.Values)
+  {
+    res.Mesh.Source = opt.Values->Statistics; // the values' window, for their default transfer function
+  }
   res.CoveredVoxels = best.Errors.Voxels;
   res.TetLabels.resize(best.Mesh.Subdomain.size(), 1);
   if (opt.Labels)

@@ -302,6 +302,21 @@ art_render_baseline_test(image.labels_categorical BASELINE labels-cubes.png MIN_
   ARGS "${CMAKE_SOURCE_DIR}/tests/data/meshing/cubes-labels.vtu" --size 96x96 --azimuth 30 --elevation 30)
 art_expect_test(cli.render_label_mesh EXIT 0 STDOUT "mesh +label mesh: 1044 tets"
   ARGS render "${CMAKE_SOURCE_DIR}/tests/data/meshing/cubes-labels.vtu" -o "${ART_TEST_OUTPUT}/labels.png" --size 32x32 --quiet)
+# A label mesh with a volume's values (tests/data/meshing/ct-tissue-values.vtu: the CT head's soft
+# tissue and bone as labels, the CT's values fitted inside them): by default the values inside
+# each label in its hue; flat gives the labels alone, off the values alone.
+set(_tissue "${CMAKE_SOURCE_DIR}/tests/data/meshing/ct-tissue-values.vtu")
+art_render_baseline_test(image.labels_values_ct BASELINE labels-values-ct.png MIN_PSNR 40 MIN_SSIM 0.98
+  ARGS "${_tissue}" --size 160x160 --azimuth 30 --elevation 10 --no-error)
+art_expect_test(cli.render_label_values EXIT 0 STDOUT "mesh +label mesh with values: 4261 tets"
+  ARGS render "${_tissue}" -o "${ART_TEST_OUTPUT}/label-values.png" --size 32x32 --no-error --quiet)
+art_expect_test(cli.render_label_colours_flat EXIT 0 STDOUT "mesh +label mesh: 4261 tets"
+  ARGS render "${_tissue}" -o "${ART_TEST_OUTPUT}/label-flat.png" --size 32x32 --label-colours flat --no-error --quiet)
+art_expect_test(cli.render_label_colours_off EXIT 0 STDOUT "mesh +tet mesh: 4261 tets"
+  ARGS render "${_tissue}" -o "${ART_TEST_OUTPUT}/label-off.png" --size 32x32 --label-colours off --no-error --quiet)
+art_expect_test(cli.render_label_colours_bad EXIT 2 ONE_LINE_STDERR
+  STDERR "--label-colours expects values, flat or off, got 'hue'"
+  ARGS render "${_tissue}" -o "${ART_TEST_OUTPUT}/never.png" --label-colours hue)
 # --refinement anisotropic reduces through MMG3D; the label says so and the image is scored.
 art_expect_test(cli.render_tets_anisotropic EXIT 0
   STDOUT "least-squares reduction, anisotropic \\(MMG3D\\), vertices relocated, RMS error [0-9.]+.*: (1[89][0-9][0-9]|20[0-9][0-9]) tets.*error +PSNR [0-9.]+ dB"

@@ -11,7 +11,7 @@
 #include "cli/Json.h"
 #include "cli/LoadOptions.h"
 #include "rendering/DefaultFrame.h"
-#include "rendering/LabelMesh.h"
+#include "rendering/LabelColours.h"
 #include "rendering/MeshCache.h"
 #include "ParallelTiles.h"
 #include "cli/ProgressBar.h"
@@ -65,6 +65,7 @@ void Declare(cli::Options& o)
     "clear, a grey ramp over its 1st-99.5th percentiles, labels in distinct colours; under --mip a window; ct-skin-bone, "
     "ct-bone, grey-ramp, constant, labels: one colour per integer, the default for a label mesh) or a file of 'scalar r g b opacity' lines, or a ParaView preset exported as .json",
     "auto");
+  o.Add("label-colours", 0, "MODE", cli::LabelColouringHelp(), "values");
   o.Add("unit-distance", 0, "U",
     "world distance over which the transfer function's opacity applies (default: 1 for CT in Hounsfield "
     "units with voxels of 0.1-10 mm; else the data's mean sample spacing, so any unit renders alike)");
@@ -138,6 +139,21 @@ void RefuseContradictions(const cli::Options& o)
   }
 }
 
+// --unit-distance, when given, restates f's opacities per that distance.
+art::TransferFunction WithUnitDistance(const cli::Options& o, const art::TransferFunction& f)
+{
+  if (!o.Has("unit-distance"))
+  {
+    return f;
+  }
+  const double u = o.GetDouble("unit-distance");
+  if (!(u > 0) || !std::isfinite(u))
+  {
+    throw cli::UsageError("--unit-distance expects a positive length, got '" + o.Get("unit-distance") + "'");
+  }
+  return art::TransferFunction(f.Nodes(), u);
+}
+
 // A preset's opacities are per unit distance: 1 mm on CT in HU of mm voxels, else the data's sample spacing;
 // --unit-distance overrides that and a file's own unit-distance line.
 // `mesh`: the tet mesh built from `data` (its used, merged points), for a preset's unit distance.
@@ -158,16 +174,7 @@ art::TransferFunction MakeTF(const cli::Options& o, vtkDataSet* data, double lo,
   {
     f = art::TransferFunction::PresetFor(tf, data, lo, hi, mesh);
   }
-  if (o.Has("unit-distance"))
-  {
-    const double u = o.GetDouble("unit-distance");
-    if (!(u > 0) || !std::isfinite(u))
-    {
-      throw cli::UsageError("--unit-distance expects a positive length, got '" + o.Get("unit-distance") + "'");
-    }
-    f = art::TransferFunction(f.Nodes(), u);
-  }
-  return f;
+  return WithUnitDistance(o, f);
 }
 
 // --clip's planes "x,y,z,nx,ny,nz;..." as (a, b, c, d) = (n, -n.p): a x + b y + c z + d >= 0 kept.
@@ -455,18 +462,29 @@ void LoadMeshScene(const cli::Options& o, const std::string& input, Scene& sc)
 {
   auto grid = art::LoadMesh(input);
   std::string array = art::AddComponentArray(grid, o.Get("array"), input); // NAME:magnitude, NAME:N
-  // A label mesh: each tet in its label's colour (a categorical table unless --tf says otherwise).
-  const bool labels = cli::IsLabelMesh(grid, array);
+  // A label mesh: each tet in its label's colour (a categorical table unless --tf says otherwise),
+  // and the values inside each label when it has them (--label-colours).
+  cli::LabelColouring mode = cli::LabelColouring::Values;
+  if (!cli::ParseLabelColouring(o.Get("label-colours"), mode))
+  {
+    throw cli::UsageError("--label-colours expects values, flat or off, got '" + o.Get("label-colours") + "'");
+  }
+  const auto labels = cli::LabelMeshFor(grid, array, mode, !o.Flag("mip") && !o.Has("iso"));
+  const bool values = labels && labels->HasValues();
   if (labels)
   {
-    grid = cli::SplitByLabel(grid);
-    array = "label";
+    sc.grid = labels->Grid();
+    array = values ? "label_values" : "label";
   }
-  sc.grid = grid;
-  sc.mesh = art::TetMesh::FromVTK(grid, array, &sc.note, input);
-  sc.meshLabel = labels ? "label mesh" : "tet mesh";
+  else
+  {
+    sc.grid = grid;
+  }
+  sc.mesh = art::TetMesh::FromVTK(sc.grid, array, &sc.note, input);
+  sc.meshLabel = values ? "label mesh with values" : labels ? "label mesh" : "tet mesh";
   sc.range[0] = sc.mesh.ScalarRange(0), sc.range[1] = sc.mesh.ScalarRange(1);
-  sc.settings = MakeSettings(o, MakeTF(o, grid, sc.range[0], sc.range[1], &sc.mesh, labels));
+  sc.settings = MakeSettings(o, values ? WithUnitDistance(o, cli::LabelValuesFunction(*labels, grid, o.Get("tf")))
+                                       : MakeTF(o, sc.grid, sc.range[0], sc.range[1], &sc.mesh, labels.has_value()));
 }
 
 // A transfer function made for other data (another modality or units) draws nothing: say so

@@ -3,7 +3,10 @@
 it, the same with one triangle removed (3 open edges), two tori through each other (closed but
 self-intersecting); a sphere of 1 (radius 10 voxels) in a box of 0, and two touching labelled
 cubes (labels 1 and 2 meeting at z = 11.5) as MetaImages. cubes-labels.vtu is made from the last:
-`adaptivert reduce cubes-24.mha cubes-labels.vtu --labels --tets 1000`."""
+`adaptivert reduce cubes-24.mha cubes-labels.vtu --labels --tets 1000`. Then two labels side by
+side with a ramp, and the CT head's tissue as labels; ct-tissue-values.vtu is made from those:
+`adaptivert reduce ct-head-128-tissue.mha ct-tissue-values.vtu --labels --values
+../../../data/ct-head-128.mha --tets 4000`."""
 import math
 import numpy as np
 import vtk
@@ -70,3 +73,22 @@ halves[4:20, 4:20, 12:20] = 2
 write_mha("halves-24.mha", halves, "label")
 z, y, x = np.mgrid[0:24, 0:24, 0:24]
 write_mha("halves-24-ramp.mha", (10.0 * z).astype(np.float32), "ramp")
+
+# The CT head's tissue as labels: 1 skin and soft tissue (-400 .. 250 HU), 2 bone (above 250),
+# from the project's data/ct-head-128.mha; `reduce --labels --values` carries the CT inside them.
+r = vtk.vtkMetaImageReader()
+r.SetFileName("../../../data/ct-head-128.mha")
+r.Update()
+ct = r.GetOutput()
+hu = ns.vtk_to_numpy(ct.GetPointData().GetScalars()).reshape(ct.GetDimensions()[::-1])
+tissue = np.where(hu >= 250, 2, np.where(hu >= -400, 1, 0)).astype(np.uint8)
+im = vtk.vtkImageData()
+im.CopyStructure(ct)
+v = ns.numpy_to_vtk(tissue.ravel(), deep=1)
+v.SetName("label")
+im.GetPointData().SetScalars(v)
+w = vtk.vtkMetaImageWriter()
+w.SetFileName("ct-head-128-tissue.mha")
+w.SetInputData(im)
+w.SetCompression(True)
+w.Write()
