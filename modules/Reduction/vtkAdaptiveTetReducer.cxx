@@ -36,7 +36,7 @@ vtkStandardNewMacro(vtkAdaptiveTetReducer);
 
 vtkAdaptiveTetReducer::vtkAdaptiveTetReducer()
 {
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2); // 1: the values a label map's mesh carries (SetValuesData)
   this->SetNumberOfOutputPorts(2);
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
   this->SetController(vtkMultiProcessController::GetGlobalController());
@@ -192,10 +192,29 @@ vtkIdType vtkAdaptiveTetReducer::GetLevel(int i) const
   return i >= 0 && i < static_cast<int>(this->Levels.size()) ? this->Levels[i] : 0;
 }
 
-int vtkAdaptiveTetReducer::FillInputPortInformation(int, vtkInformation* info)
+int vtkAdaptiveTetReducer::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkImageData");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
   return 1;
+}
+
+void vtkAdaptiveTetReducer::SetValuesConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+void vtkAdaptiveTetReducer::SetValuesData(vtkDataObject* values)
+{
+  this->SetInputData(1, values);
+}
+
+vtkDataObject* vtkAdaptiveTetReducer::GetValuesData()
+{
+  return this->GetNumberOfInputConnections(1) > 0 ? this->GetInputDataObject(1, 0) : nullptr;
 }
 
 int vtkAdaptiveTetReducer::FillOutputPortInformation(int port, vtkInformation* info)
@@ -222,6 +241,18 @@ int vtkAdaptiveTetReducer::RequestUpdateExtent(
     in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), piece.Count);
     in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
     return 1;
+  }
+  // The values a label map's mesh carries: all of them, as one piece.
+  if (vtkInformation* values = inputVector[1]->GetInformationObject(0))
+  {
+    if (values->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+    {
+      values->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+        values->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
+    }
+    values->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    values->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    values->Set(vtkStreamingDemandDrivenPipeline::EXACT_EXTENT(), 1);
   }
   // Otherwise the fit needs every voxel: ask for the whole extent, as one piece. The piece request
   // copied from the output (a parallel writer) made an image source split its extent: each piece
@@ -347,7 +378,7 @@ int vtkAdaptiveTetReducer::RequestData(
     }
     if (this->UseRegion || this->Labels)
     {
-      this->RequestRegion(input, volume, asDouble, output, levels, progress);
+      this->RequestRegion(input, volume, vtkImageData::GetData(inputVector[1]), asDouble, output, levels, progress);
       return 1;
     }
     if (!distributed)

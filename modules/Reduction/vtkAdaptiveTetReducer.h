@@ -45,6 +45,8 @@
 #include <string> // SelectVoxels
 #include <vector>
 
+class vtkAlgorithmOutput;
+class vtkDataObject;
 class vtkImageData;
 class vtkMultiBlockDataSet;
 class vtkMultiProcessController;
@@ -245,6 +247,20 @@ public:
   vtkGetMacro(Labels, bool);
   vtkBooleanMacro(Labels, bool);
 
+  ///@{
+  /**
+   * With Labels: a volume of the same dimensions (an MRI beside its segmentation), on the
+   * optional input port 1, whose active point scalars (one component) are fitted inside the
+   * labels in the least-squares sense: the output then carries them as point scalars, the RMS and
+   * max error inside the labels, and their statistics (source_window) for a default transfer
+   * function, as `adaptivert reduce --labels --values` writes them. As vtkProbeFilter takes its
+   * source: SetValuesConnection for a pipeline, SetValuesData for a data set (nullptr removes it).
+   */
+  void SetValuesConnection(vtkAlgorithmOutput* output);
+  void SetValuesData(vtkDataObject* values);
+  vtkDataObject* GetValuesData();
+  ///@}
+
   /**
    * The label a label map leaves unmeshed (default 0).
    */
@@ -330,7 +346,7 @@ protected:
 
 #ifndef __VTK_WRAP__
   /// The SetRegion / Labels path of RequestData (vtkAdaptiveTetReducerRegion.cxx): throws art::Error.
-  void RequestRegion(vtkImageData* input, const art::VoxelVolume& volume, bool asDouble,
+  void RequestRegion(vtkImageData* input, const art::VoxelVolume& volume, vtkImageData* values, bool asDouble,
     vtkUnstructuredGrid* output, vtkMultiBlockDataSet* levels, art::Progress& progress);
 #endif
 

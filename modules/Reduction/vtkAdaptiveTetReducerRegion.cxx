@@ -6,15 +6,18 @@
 #include "FullResolutionMesh.h"
 #include "Progress.h"
 #include "RegionReducer.h"
+#include "ReducerVTK.h"
 #include "RegionVTK.h"
 #include "WholeBoxComparison.h"
 #include "vtkImageDomainMesher.h"
 
 #include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -40,12 +43,16 @@ void vtkAdaptiveTetReducer::RemoveRegion()
   }
 }
 
-void vtkAdaptiveTetReducer::RequestRegion(vtkImageData* input, const art::VoxelVolume& volume, bool asDouble,
-  vtkUnstructuredGrid* output, vtkMultiBlockDataSet* levels, art::Progress& progress)
+void vtkAdaptiveTetReducer::RequestRegion(vtkImageData* input, const art::VoxelVolume& volume, vtkImageData* values,
+  bool asDouble, vtkUnstructuredGrid* output, vtkMultiBlockDataSet* levels, art::Progress& progress)
 {
   if (this->UseRegion && this->Labels)
   {
     throw art::Error("SetRegion and SetLabels exclude each other: a label map is meshed by its labels");
+  }
+  if (values && !this->Labels)
+  {
+    throw art::Error("the values input (port 1, SetValuesData) goes with SetLabels: a region's values are the input's own");
   }
   if (this->TargetError >= 0 && this->ErrorMetric == MAX)
   {
@@ -65,6 +72,17 @@ void vtkAdaptiveTetReducer::RequestRegion(vtkImageData* input, const art::VoxelV
   ro.TargetError = this->TargetError < 0 ? -1.0
                                          : this->TargetError * (this->ErrorRelative ? volume.Range[1] - volume.Range[0] : 1.0);
   ro.SolverTolerance = this->SolverTolerance;
+  art::VoxelVolume fitted;
+  if (values)
+  {
+    vtkDataArray* a = values->GetPointData()->GetScalars();
+    if (!a || a->GetNumberOfComponents() != 1)
+    {
+      throw art::Error("the values input (port 1) needs one-component point scalars");
+    }
+    fitted = art::VolumeFromImage(values);
+    ro.Values = &fitted;
+  }
   vtkSmartPointer<vtkImageDomainMesher> mesher = vtkSmartPointer<vtkImageDomainMesher>::New();
   const art::RegionResult r = art::ReduceRegion(
     volume, ro, [&mesher](const art::ImageDomainRequest& q) { return mesher->Mesh(q); }, &progress);
@@ -75,7 +93,7 @@ void vtkAdaptiveTetReducer::RequestRegion(vtkImageData* input, const art::VoxelV
     box = art::WholeBoxForRegionError(volume, r.Mask.Inside, r.Mesh.Rms, r.Mesh.NumberOfTets(), cap, &progress);
   }
   vtkSmartPointer<vtkUnstructuredGrid> grid =
-    art::RegionToUnstructuredGrid(r, ro, asDouble, this->CompareWholeBox && !this->Labels ? &box : nullptr);
+    art::RegionToUnstructuredGrid(r, ro, values ? fitted.DoubleValues : asDouble, this->CompareWholeBox && !this->Labels ? &box : nullptr);
   vtkFieldData* in = input->GetFieldData();
   for (int a = 0; in && a < in->GetNumberOfArrays(); ++a)
   {

@@ -8,6 +8,7 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -193,4 +194,51 @@ TEST(ImageDomainMesher, TouchingLabelledCubesShareTheirInterfaceFaces)
   EXPECT_LT(offPlane, 0.05) << "interface points lie on z = 11.5";
   EXPECT_GT(area, 0.8 * 16 * 16) << "the interface covers the cubes' shared square";
   EXPECT_LT(area, 16.0 * 16.0 + 1e-9);
+}
+
+// A label map's mesh carries a second volume's values (input port 1, as reduce --labels --values
+// does): the ramp 10 z over two touching cubes, fitted inside them, is at every mesh point within
+// half a voxel's step (5; the boundary lies half a voxel outside the outer voxels' centres) and its
+// statistics are recorded; without SetLabels it is refused.
+TEST(ImageDomainMesher, LabelMapCarriesTheValuesInput)
+{
+  const auto labels = Image(24, [](int i, int j, int k) {
+    if (i < 4 || i > 19 || j < 4 || j > 19 || k < 4 || k > 19)
+      return 0;
+    return k < 12 ? 1 : 2;
+  });
+  auto ramp = vtkSmartPointer<vtkImageData>::New();
+  ramp->SetDimensions(24, 24, 24);
+  vtkNew<vtkFloatArray> r;
+  r->SetName("ramp");
+  r->SetNumberOfTuples(24 * 24 * 24);
+  for (vtkIdType p = 0; p < r->GetNumberOfTuples(); ++p)
+    r->SetValue(p, static_cast<float>(10 * (p / (24 * 24))));
+  ramp->GetPointData()->SetScalars(r);
+  vtkNew<vtkAdaptiveTetReducer> red;
+  red->SetInputData(labels);
+  red->SetValuesData(ramp);
+  EXPECT_EQ(red->GetValuesData(), ramp.Get());
+  red->SetLabels(true);
+  red->SetTargetTets(2000);
+  red->Update();
+  vtkUnstructuredGrid* g = red->GetOutput();
+  ASSERT_GT(g->GetNumberOfCells(), 500);
+  vtkDataArray* v = g->GetPointData()->GetScalars();
+  ASSERT_NE(v, nullptr);
+  EXPECT_STREQ(v->GetName(), "ramp");
+  double worst = 0;
+  for (vtkIdType p = 0; p < g->GetNumberOfPoints(); ++p)
+    worst = std::max(worst, std::fabs(v->GetTuple1(p) - 10 * g->GetPoint(p)[2]));
+  EXPECT_LT(worst, 5.0);
+  EXPECT_LT(red->GetRMSError(), 0.5);
+  EXPECT_NE(g->GetCellData()->GetArray("label"), nullptr);
+  EXPECT_NE(g->GetFieldData()->GetArray("source_window"), nullptr);
+  // A region's values are its input's own.
+  red->SetLabels(false);
+  red->SetRegion(0.5, 2.5);
+  red->Update();
+  EXPECT_EQ(red->GetOutput()->GetNumberOfCells(), 0);
+  red->SetValuesData(nullptr);
+  EXPECT_EQ(red->GetValuesData(), nullptr);
 }

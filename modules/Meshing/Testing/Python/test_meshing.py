@@ -1,15 +1,17 @@
 """The meshing filters from Python: vtkSurfaceTetrahedralizer meshes a closed sphere surface to
 its enclosed volume with progress events, and refuses an open one with an error event naming the
 open edges; vtkAdaptiveTetReducer.SetRegion meshes a sphere of 1 in a box of 0 through CGAL's
-mesher (the object-factory override registered by importing the package)."""
+mesher (the object-factory override registered by importing the package), and SetLabels with
+SetValuesConnection fits a second volume's values inside the sphere as a label."""
 import math
 
 import adaptivert
-from vtkmodules.vtkCommonCore import vtkCommand, vtkUnsignedCharArray
+from vtkmodules.vtkCommonCore import vtkCommand, vtkFloatArray, vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkMassProperties
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
+from vtkmodules.vtkImagingCore import vtkImageShiftScale
 
 sphere = vtkSphereSource()
 sphere.SetRadius(2.0)
@@ -86,3 +88,35 @@ print(f"region: {out.GetNumberOfCells()} tets, volume {m2.GetVolume():.1f} (sphe
 assert out.GetNumberOfCells() > 500
 assert abs(m2.GetVolume() - expected) < 0.03 * expected
 assert out.GetFieldData().GetArray("region_voxels").GetValue(0) == reducer.GetRegionVoxels()
+
+# A label map with a second volume's values on input port 1, from a pipeline
+# (SetValuesConnection), as `reduce --labels --values` fits them: the sphere as label 1 and the
+# values 3 x + 100 (vtkImageShiftScale of an x ramp) fitted inside it, within half a voxel's step
+# (1.5) at every mesh point.
+ramp = vtkImageData()
+ramp.SetDimensions(n, n, n)
+xs = vtkFloatArray()
+xs.SetName("x")
+xs.SetNumberOfTuples(n * n * n)
+for p in range(n * n * n):
+    xs.SetValue(p, float(p % n))
+ramp.GetPointData().SetScalars(xs)
+shift = vtkImageShiftScale()
+shift.SetInputData(ramp)
+shift.SetScale(3.0)
+shift.SetShift(100.0 / 3.0)  # (x + shift) * scale
+shift.SetOutputScalarTypeToFloat()
+labels = adaptivert.vtkAdaptiveTetReducer()
+labels.SetInputData(image)
+labels.SetValuesConnection(shift.GetOutputPort())
+labels.SetLabels(True)
+labels.SetTargetTets(2000)
+labels.Update()
+out = labels.GetOutput()
+v = out.GetPointData().GetScalars()
+assert v is not None and out.GetCellData().GetArray("label") is not None
+worst = max(abs(v.GetTuple1(p) - (3.0 * out.GetPoint(p)[0] + 100.0)) for p in range(out.GetNumberOfPoints()))
+print(f"labels with values: {out.GetNumberOfCells()} tets, RMS {labels.GetRMSError():.3g}, worst point {worst:.3f}")
+assert out.GetNumberOfCells() > 500
+assert worst < 1.5, worst
+assert labels.GetRMSError() < 0.2, labels.GetRMSError()
