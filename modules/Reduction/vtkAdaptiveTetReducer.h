@@ -238,6 +238,15 @@ public:
   vtkGetMacro(UseRegion, bool);
   ///@}
 
+  ///@{
+  /**
+   * The region's range and whether it is meshed, set apart (as ParaView's properties set them):
+   * SetRegionRange keeps UseRegion as it is; SetUseRegion(true) meshes the range last set.
+   */
+  void SetRegionRange(double lo, double hi);
+  void SetUseRegion(bool use);
+  ///@}
+
   /**
    * The input is a label map (integer values): one conforming multi-material mesh of every label
    * but the Background, each tet tagged in the cell array "label", the interfaces between labels

@@ -34,6 +34,25 @@ void vtkAdaptiveTetReducer::SetRegion(double lo, double hi)
   }
 }
 
+void vtkAdaptiveTetReducer::SetRegionRange(double lo, double hi)
+{
+  if (this->Region[0] != lo || this->Region[1] != hi)
+  {
+    this->Region[0] = lo;
+    this->Region[1] = hi;
+    this->Modified();
+  }
+}
+
+void vtkAdaptiveTetReducer::SetUseRegion(bool use)
+{
+  if (this->UseRegion != use)
+  {
+    this->UseRegion = use;
+    this->Modified();
+  }
+}
+
 void vtkAdaptiveTetReducer::RemoveRegion()
 {
   if (this->UseRegion)

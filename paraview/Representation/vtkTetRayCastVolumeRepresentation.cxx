@@ -113,6 +113,17 @@ int vtkTetRayCastVolumeRepresentation::GetIntegrator()
   return this->Mapper->GetTrapezoidRule() ? TRAPEZOID : EXACT;
 }
 
+void vtkTetRayCastVolumeRepresentation::SetLabelColoring(int mode)
+{
+  this->Mapper->SetLabelColoring(mode);
+  this->MarkModified();
+}
+
+int vtkTetRayCastVolumeRepresentation::GetLabelColoring()
+{
+  return this->Mapper->GetLabelColoring();
+}
+
 void vtkTetRayCastVolumeRepresentation::AddIsoValue(double value)
 {
   this->IsoValues.push_back(value);

@@ -7,8 +7,8 @@
  * segment integral; Grosso, Luerig & Ertl 1997) under the name "Tet Ray Cast" and makes it the
  * active one, as ParaView's Surface LIC adds its own mapper. The "Tet Ray Cast Volume"
  * representation type of the plugin's XML is this class. The caster's settings are forwarded:
- * early ray termination, the segment rule, image sample distances and iso-surfaces (coloured as
- * `adaptivert render --iso` colours them, in turn from a palette of four).
+ * early ray termination, the segment rule, image sample distances, label colouring and
+ * iso-surfaces (coloured as `adaptivert render --iso` colours them, in turn from a palette of four).
  *
  * In parallel each rank casts the cells it holds, rays entering and leaving through its piece's
  * boundary faces, and ParaView composites the ranks' images in visibility order. The pieces of a
@@ -54,6 +54,17 @@ public:
   /** The segment rule: EXACT (default) or TRAPEZOID. */
   void SetIntegrator(int rule);
   int GetIntegrator();
+
+  ///@{
+  /**
+   * How a label mesh (a cell array "label") is coloured: vtkTetRayCastMapper's LabelColoring,
+   * LABEL_COLORING_VALUES (default: the coloured array's values inside each label, the colour
+   * map in each label's hue), LABEL_COLORING_FLAT (each label in one colour) or
+   * LABEL_COLORING_OFF (the colour map alone, labels ignored).
+   */
+  void SetLabelColoring(int mode);
+  int GetLabelColoring();
+  ///@}
 
   ///@{
   /** Shaded iso-surfaces drawn with the volume, all at IsoOpacity (default 1). */

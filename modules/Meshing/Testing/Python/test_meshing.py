@@ -120,3 +120,17 @@ print(f"labels with values: {out.GetNumberOfCells()} tets, RMS {labels.GetRMSErr
 assert out.GetNumberOfCells() > 500
 assert worst < 1.5, worst
 assert labels.GetRMSError() < 0.2, labels.GetRMSError()
+
+# The region's range and its use set apart, as ParaView's properties set them: a range alone does
+# not turn the region on; UseRegion meshes the range last set.
+parts = adaptivert.vtkAdaptiveTetReducer()
+parts.SetInputData(image)
+parts.SetTargetTets(2000)
+parts.SetRegionRange(0.5, 1.0)
+assert not parts.GetUseRegion() and tuple(parts.GetRegion()) == (0.5, 1.0)
+parts.SetUseRegion(True)
+parts.Update()
+assert parts.GetRegionVoxels() == reducer.GetRegionVoxels(), (parts.GetRegionVoxels(), reducer.GetRegionVoxels())
+parts.SetUseRegion(False)
+assert not parts.GetUseRegion()
+print("SetRegionRange + SetUseRegion: the same region")
