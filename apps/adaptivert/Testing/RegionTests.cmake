@@ -41,5 +41,6 @@ art_expect_test(cli.reduce_region_ramp_exact EXIT 0 STDOUT "\"rms_error\":[0-9.]
   ARGS reduce "${_mesh}/halves-24-ramp.mha" "${_out}/region_ramp.vtu" --region 100:230 --tets 1000 --no-whole-box
   --json --quiet)
 # reduce --labels --values, rendered: each label's hue brightening with the values as the closed
-# form says (max 0.007 off on 8-bit pixels, bound 0.03), one colour per label under flat.
+# form says (max 0.007 off on 8-bit pixels, bound 0.03), one colour per label under flat, and
+# --tf grey-ramp brightening them in their hues.
 art_add_python_test(cli.render_label_values_ramp "${CMAKE_CURRENT_LIST_DIR}/label_values_check.py" LABELS image)

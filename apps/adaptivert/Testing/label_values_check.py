@@ -7,7 +7,8 @@ holds one value, so a pixel is c(label) * luminance(v) * (1 - exp(-tau(v) d)) ov
 label's categorical colour, luminance 0.3 .. 1 and tau from LabelOpacity / 5 to LabelOpacity per
 unit distance (the voxel spacing, 1) over the values' window the mesh records, d the slab's depth
 (16, the meshed labels' surfaces at half a voxel outside the centres). `--label-colours flat`
-gives each label one colour at every height; the values' own brightness is then gone.
+gives each label one colour at every height; the values' own brightness is then gone. `--tf`
+sets the brightness over the values, still in each label's hue.
 """
 import json
 import math
@@ -98,4 +99,13 @@ for label in (1, 2):
     spread = got.max(0) - got.min(0)
     print(f"flat label {label}: colour {got.mean(0).round(3)}, spread over z {spread.max():.4f}")
     assert spread.max() < 0.02 and np.abs(got.mean(0) - PALETTE[label]).max() < 0.02, (label, got.mean(0), spread)
+# A --tf preset sets the brightness over the values instead, still in each label's hue: grey-ramp
+# (black to white over the values' range, opacity 0 to 0.2) brightens with z too.
+tinted, x, z = render("grey-ramp", "--tf", "grey-ramp")
+for label in (1, 2):
+    got = tinted[rows][:, inside(label, x)].mean(1)
+    k = got @ PALETTE[label] / (PALETTE[label] @ PALETTE[label])
+    hue = np.abs(got - k[:, None] * PALETTE[label][None, :]).max()
+    print(f"--tf grey-ramp label {label}: brightness {k.min():.3f} .. {k.max():.3f}, off its hue by {hue:.4f}")
+    assert hue < 0.02 and k[0] > 2 * k[-1], (label, hue, k[0], k[-1])  # row 0 is the top, the highest z
 print("ok")
