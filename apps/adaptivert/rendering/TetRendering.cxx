@@ -117,6 +117,11 @@ void Declare(cli::Options& o)
 // relocated; --reference --tets 500 rendered the reference and reduced nothing).
 void RefuseContradictions(const cli::Options& o)
 {
+  cli::LabelColouring mode = cli::LabelColouring::Values;
+  if (!cli::ParseLabelColouring(o.Get("label-colours"), mode))
+  {
+    throw cli::UsageError("--label-colours expects values, flat or off, got '" + o.Get("label-colours") + "'");
+  }
   if (o.Flag("relocate") && o.Flag("no-relocate"))
   {
     throw cli::UsageError("--relocate and --no-relocate contradict each other: give one");
@@ -465,10 +470,7 @@ void LoadMeshScene(const cli::Options& o, const std::string& input, Scene& sc)
   // A label mesh: each tet in its label's colour (a categorical table unless --tf says otherwise),
   // and the values inside each label when it has them (--label-colours).
   cli::LabelColouring mode = cli::LabelColouring::Values;
-  if (!cli::ParseLabelColouring(o.Get("label-colours"), mode))
-  {
-    throw cli::UsageError("--label-colours expects values, flat or off, got '" + o.Get("label-colours") + "'");
-  }
+  cli::ParseLabelColouring(o.Get("label-colours"), mode); // RefuseContradictions checked the word
   const auto labels = cli::LabelMeshFor(grid, array, mode, !o.Flag("mip") && !o.Has("iso"));
   const bool values = labels && labels->HasValues();
   if (labels)
