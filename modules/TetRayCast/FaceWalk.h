@@ -62,6 +62,18 @@ inline int ExitBySigns(const double p[3])
 }
 
 constexpr int Next[4] = { 1, 2, 0, 1 };
+
+/// Asks the cache for the records of r's neighbours. A link is 4 * tet + face, so the byte
+/// 8 * link into the table lies in that tet's 32-byte record: one load and one prefetch a face.
+/// A boundary link (-1) names a byte before the table; a prefetch never faults.
+inline void PrefetchNeighbours(const TetRecord* records, const TetRecord& r)
+{
+  const std::uintptr_t base = reinterpret_cast<std::uintptr_t>(records);
+  for (int l : r.link)
+  {
+    __builtin_prefetch(reinterpret_cast<const void*>(base + static_cast<std::uintptr_t>(std::intptr_t(l) * 8)));
+  }
+}
 } // namespace walk
 
 /// The face-to-face walk shared by TetWalker and ProjectedWalker: Geo supplies the corners, the
@@ -136,10 +148,7 @@ ART_ALWAYS_INLINE inline void WalkFacesWith(const TetMesh& M, const Geo& g, int 
     const TetRecord& rec = records[t];
     if (prefetch)
     {
-      for (int l : rec.link)
-      {
-        __builtin_prefetch(&records[TetMesh::LinkTet(std::max(l, 0))]);
-      }
+      walk::PrefetchNeighbours(records, rec);
     }
     const Corner d = g.MakeCorner(rec.v[entryFace]);
     const double p[3] = { g.Side(c[0], d), g.Side(c[1], d), g.Side(c[2], d) };

@@ -115,10 +115,7 @@ ART_AVX2_INLINE void WalkProjectedAvx2(const TetMesh& M, const ProjectedWalker& 
     const TetRecord& rec = records[t];
     if (prefetch)
     {
-      for (int l : rec.link)
-      {
-        __builtin_prefetch(&records[TetMesh::LinkTet(std::max(l, 0))]);
-      }
+      walk::PrefetchNeighbours(records, rec);
     }
     const int id = rec.v[entryFace];
     const double* vp = &V[id].x;
