@@ -131,11 +131,27 @@ public:
     }
     return i;
   }
-  /// Locate(s) for s likely in interval i (the last one of a ray): two comparisons when it is.
+  /// Locate(s) for s likely in interval i (the last one of a ray): two comparisons when it is,
+  /// two more when s lies in a neighbouring interval (a segment that crosses one control point).
   ART_TF_INLINE int LocateFrom(double s, int i) const
   {
     const std::size_t j = static_cast<std::size_t>(i + 1);
-    return s >= Bounds[j].lo && s < Bounds[j].hi ? i : Locate(s);
+    if (s >= Bounds[j].lo)
+    {
+      if (s < Bounds[j].hi)
+      {
+        return i;
+      }
+      if (j + 1 < Bounds.size() && s < Bounds[j + 1].hi)
+      {
+        return i + 1; // Bounds[j + 1].lo is Bounds[j].hi
+      }
+    }
+    else if (j > 0 && s >= Bounds[j - 1].lo)
+    {
+      return i - 1;
+    }
+    return Locate(s);
   }
   /// Colour and extinction at s.
   void Evaluate(double s, double rgb[3], double& tau) const { EvaluateIn(Locate(s), s, rgb, tau); }

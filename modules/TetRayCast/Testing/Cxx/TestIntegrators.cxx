@@ -14,6 +14,7 @@
 #include <cmath>
 #include <fstream>
 #include <utility>
+#include <vector>
 
 using namespace art;
 
@@ -211,6 +212,41 @@ TEST(TransferFunction, TransparentRanges)
   for (double s : { -1.0, 0.0, 0.1, 0.3, 0.45, 0.6, 0.99, 1.0, 1.5, 2.0, 3.0 })
     for (int i = -1; i < 6; ++i)
       EXPECT_EQ(tf.LocateFrom(s, i), tf.Locate(s)) << s << " " << i;
+}
+
+TEST(TransferFunction, LocateFromNeighboursAgreeWithLocate)
+{
+  // LocateFrom's guess, the neighbours it tries next and the table behind them give Locate's
+  // interval for scalars on, next to and between the nodes, beyond the ends and infinite, from
+  // every guess: the segment rules take the interval from it.
+  TransferFunction tf({ { -1000, { 0, 0, 0 }, 0.0, 0 }, { -600, { 1, 0, 0 }, 0.0, 0 }, { -450, { 1, 1, 0 }, 0.1, 0 },
+                        { -300, { 0, 1, 0 }, 0.0, 0 }, { 200, { 0, 1, 1 }, 0.0, 0 }, { 450, { 0, 0, 1 }, 0.3, 0 },
+                        { 1200, { 1, 1, 1 }, 0.7, 0 } });
+  std::vector<double> s = { -HUGE_VAL, HUGE_VAL, -1e300, 1e300 };
+  for (const auto& n : tf.Nodes())
+  {
+    s.push_back(n.s), s.push_back(std::nextafter(n.s, -HUGE_VAL)), s.push_back(std::nextafter(n.s, HUGE_VAL));
+  }
+  for (int k = 0; k <= 4000; ++k)
+  {
+    s.push_back(-1500.0 + 3000.0 * k / 4000.0);
+  }
+  const int n = static_cast<int>(tf.Nodes().size());
+  int neighbours = 0;
+  for (double v : s)
+  {
+    const int at = tf.Locate(v);
+    for (int i = -1; i < n; ++i)
+    {
+      ASSERT_EQ(tf.LocateFrom(v, i), at) << v << " from " << i;
+      neighbours += std::abs(at - i) == 1;
+    }
+  }
+  EXPECT_GT(neighbours, 6000); // guesses one interval off, the case LocateFrom tries second
+  TransferFunction one({ { 0.5, { 1, 1, 1 }, 0.2, 0 } });
+  for (double v : { -HUGE_VAL, 0.0, 0.5, 1.0, HUGE_VAL })
+    for (int i = -1; i < 1; ++i)
+      EXPECT_EQ(one.LocateFrom(v, i), one.Locate(v)) << v << " from " << i;
 }
 
 TEST(Integrators, TrapezoidConvergesToExact)
