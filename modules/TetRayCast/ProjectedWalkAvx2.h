@@ -73,6 +73,46 @@ ART_AVX2_INLINE void Corners(__m256d X, __m256d Y, __m256d M, __m256d N, const i
     c[k] = { id[k], x[k], y[k], m[k], n[k] };
   }
 }
+
+/// The entry face's corners id[0..2] in lanes 0..2 of X, Y (relative to the pixel), M and N, lane
+/// 3 zero, and in E the side product of the edge opposite each, as MakeCorner and Side make them:
+/// the three vertices transposed, then the products of the corners rotated by one and by two.
+ART_AVX2_INLINE void EntryFace(const ProjectedWalker& g, const int id[4], __m256d& X, __m256d& Y, __m256d& M,
+  __m256d& N, __m256d& E)
+{
+  const ProjectedView::Vertex* V = g.Vertices();
+  const __m256d a = _mm256_loadu_pd(&V[id[0]].x), b = _mm256_loadu_pd(&V[id[1]].x), c = _mm256_loadu_pd(&V[id[2]].x);
+  const __m256d zero = _mm256_setzero_pd();
+  const __m256d ab0 = _mm256_unpacklo_pd(a, b), ab1 = _mm256_unpackhi_pd(a, b); // x x m m, y y n n
+  const __m256d c0 = _mm256_unpacklo_pd(c, zero), c1 = _mm256_unpackhi_pd(c, zero);
+  const __m256d PX = _mm256_blend_pd(_mm256_set1_pd(g.PixelX()), zero, 8);
+  const __m256d PY = _mm256_blend_pd(_mm256_set1_pd(g.PixelY()), zero, 8);
+  X = _mm256_sub_pd(_mm256_permute2f128_pd(ab0, c0, 0x20), PX);
+  Y = _mm256_sub_pd(_mm256_permute2f128_pd(ab1, c1, 0x20), PY);
+  M = _mm256_permute2f128_pd(ab0, c0, 0x31);
+  N = _mm256_permute2f128_pd(ab1, c1, 0x31);
+  // e[k] = Side(c[k+1], c[k+2]) = x[k+1] y[k+2] - y[k+1] x[k+2]; lane 3: 0.
+  const __m256d X1 = _mm256_permute4x64_pd(X, 0xC9), X2 = _mm256_permute4x64_pd(X, 0xD2);
+  const __m256d Y1 = _mm256_permute4x64_pd(Y, 0xC9), Y2 = _mm256_permute4x64_pd(Y, 0xD2);
+  E = _mm256_sub_pd(_mm256_mul_pd(X1, Y2), _mm256_mul_pd(Y1, X2));
+  const __m256d ABS = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffffLL));
+  const int nearZero = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_and_pd(E, ABS), _mm256_set1_pd(g.Bound()), _CMP_LE_OQ)) & 7;
+  if (__builtin_expect(nearZero != 0, 0))
+  {
+    ProjectedWalker::Corner cs[3];
+    Corners(X, Y, M, N, id, cs);
+    alignas(32) double e[4];
+    _mm256_store_pd(e, E);
+    for (int k = 0; k < 3; ++k)
+    {
+      if (nearZero & (1 << k))
+      {
+        e[k] = g.Exact(cs[walk::Next[k]], cs[walk::Next[walk::Next[k]]]);
+      }
+    }
+    E = _mm256_load_pd(e);
+  }
+}
 } // namespace avx2
 
 /// As WalkFacesWith<false> with a ProjectedWalker, the same crossings bit for bit.
@@ -87,21 +127,14 @@ ART_AVX2_INLINE void WalkProjectedAvx2(const TetMesh& M, const ProjectedWalker& 
   std::uint64_t n = 0, nudged = 0;
   FaceCrossing out = exit;
   // The entry face's corners in lanes 0..2, their ids, and e[k] of the edge opposite corner k.
-  alignas(32) double cx[4], cy[4], cm[4], cn[4], ce[4];
   int cid[4];
+  __m256d X, Y, Mv, Nv, E;
   {
     const auto& v = records[t].v;
     const int* fv = TetMesh::FaceVertex[entryFace];
-    Corner c[3] = { g.MakeCorner(v[fv[0]]), g.MakeCorner(v[fv[1]]), g.MakeCorner(v[fv[2]]) };
-    const double e[3] = { g.Side(c[1], c[2]), g.Side(c[2], c[0]), g.Side(c[0], c[1]) };
-    for (int k = 0; k < 3; ++k)
-    {
-      cx[k] = c[k].x, cy[k] = c[k].y, cm[k] = c[k].m, cn[k] = c[k].n, ce[k] = e[k], cid[k] = c[k].id;
-    }
-    cx[3] = cy[3] = cm[3] = cn[3] = ce[3] = 0.0, cid[3] = -1;
+    cid[0] = v[fv[0]], cid[1] = v[fv[1]], cid[2] = v[fv[2]], cid[3] = -1;
+    avx2::EntryFace(g, cid, X, Y, Mv, Nv, E);
   }
-  __m256d X = _mm256_load_pd(cx), Y = _mm256_load_pd(cy), Mv = _mm256_load_pd(cm), Nv = _mm256_load_pd(cn);
-  __m256d E = _mm256_load_pd(ce);
   const __m256d PX = _mm256_set1_pd(g.PixelX()), PY = _mm256_set1_pd(g.PixelY()), EPS = _mm256_set1_pd(g.Bound());
   const __m256d ABS = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffffLL));
   const __m256d NEG = _mm256_castsi256_pd(_mm256_set1_epi64x(static_cast<long long>(0x8000000000000000ULL)));
