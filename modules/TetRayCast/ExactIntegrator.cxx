@@ -6,10 +6,11 @@
 #include <cstring>
 
 // The integrator's cost is chains of dependent multiply-adds (series and quadrature): where the
-// CPU has fused multiply-add its entry points get a clone that uses it, chosen at load time.
+// CPU has fused multiply-add its entry points get a clone that uses it, chosen at load time, and
+// one for x86-64-v3 (AVX2 too: the exponential's integer steps in one register, not two halves).
 // Only here: the walkers need unfused products (see CMakeLists.txt).
 #if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
-#define ART_FMA_CLONES __attribute__((target_clones("fma", "default")))
+#define ART_FMA_CLONES __attribute__((target_clones("arch=x86-64-v3", "fma", "default")))
 #else
 #define ART_FMA_CLONES
 #endif
