@@ -53,6 +53,8 @@ public:
   void Compose(const Local& l, double scale, double m[6]) const;
 
   const MetricOptions& Options() const { return Opt; }
+  /// The longest edge the metric asks for from now on (voxels).
+  void SetHmax(double hmax) { Opt.Hmax = hmax; }
 
 private:
   void Smooth(std::vector<float>& field, int components, double sigma) const;

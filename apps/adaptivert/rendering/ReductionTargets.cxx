@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 
 namespace cli
 {
@@ -71,6 +72,13 @@ std::string UnreachedReason(const art::ReducedMesh& m, const art::VoxelVolume& v
   if (m.TargetReached)
   {
     return "";
+  }
+  if (m.TargetTets > 0 && m.Refinement == "anisotropic")
+  {
+    std::ostringstream s;
+    s << "tet budget missed by " << std::lround(100.0 * std::fabs(double(m.NumberOfTets()) / m.TargetTets - 1.0))
+      << "%: the remeshings ran out before MMG's count came within 5%";
+    return s.str();
   }
   if (m.TargetTets > 0)
   {
