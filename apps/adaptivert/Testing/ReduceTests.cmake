@@ -102,6 +102,17 @@ art_expect_test(cli.reduce_anisotropic EXIT 0
   ARGS reduce "${_ct}" "${_out}/reduce_aniso.vtu" --tets 3000 --levels 1000 --refinement anisotropic -q)
 art_expect_test(cli.reduce_anisotropic_json EXIT 0 STDOUT "\"refinement\":\"anisotropic\",\"levels_nested\":false"
   ARGS reduce --json --quiet "${_ct}" "${_out}/reduce_aniso_json.vtu" --tets 1500 --refinement anisotropic --tf ct-bone)
+art_expect_test(cli.reduce_anisotropic_relocate_json EXIT 0 STDOUT "\"levels_nested\":false,\"vertices_relocated\":true"
+  ARGS reduce --json --quiet "${_ct}" "${_out}/reduce_aniso_reloc.vtu" --tets 1500 --refinement anisotropic --relocate)
+# Nested bisection levels were said to have their "vertices relocated at each level".
+art_expect_test(cli.reduce_levels_nested_plain EXIT 0 STDOUT "levels +nested.time +[0-9]"
+  ARGS reduce "${_ct}" "${_out}/reduce_nested.vtu" --tets 2000 --levels 1000)
+# render's default refinement without MMG falls back to bisection and says so.
+art_expect_test(cli.render_default_without_mmg EXIT 0
+  STDERR "note: reducing with bisection: anisotropic refinement needs MMG \\(cannot load /nonexistent/libmmg3d.so.5"
+  STDOUT "least-squares reduction, vertices relocated, RMS"
+  PROGRAM "${CMAKE_COMMAND}" ARGS -E env ART_MMG_LIBRARY=/nonexistent/libmmg3d.so.5 "$<TARGET_FILE:adaptivert>"
+  render "${_ct}" -o "${_out}/no-mmg.png" --size 16x16 --tets 1000 --plain-reduction --no-error)
 # A missing or broken MMG is one line naming the library and the way out; the other refinements
 # do not need it.
 art_expect_test(cli.reduce_anisotropic_without_mmg EXIT 1 ONE_LINE_STDERR

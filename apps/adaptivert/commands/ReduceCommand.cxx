@@ -294,7 +294,7 @@ void PrintSummary(const cli::Options& o, const std::string& in, const std::strin
     }
     j.Set("levels", levels);
     j.Set("levels_not_written", std::vector<double>(missing.begin(), missing.end()));
-    j.Set("refinement", f.Refinement).Set("levels_nested", f.Nested);
+    j.Set("refinement", f.Refinement).Set("levels_nested", f.Nested).Set("vertices_relocated", f.Relocated);
     std::printf("%s\n", j.Str().c_str());
     return;
   }
@@ -314,8 +314,11 @@ void PrintSummary(const cli::Options& o, const std::string& in, const std::strin
     q.MinDihedralDegrees, q.MinRadiusRatio, q.MeanRadiusRatio);
   if (meshes.size() > 1)
   {
-    std::printf("levels       %s (%s)\n", f.Nested ? "nested" : "not nested",
-      f.Refinement == "anisotropic" ? "each remeshed by MMG3D from a uniform start" : "vertices relocated at each level");
+    const bool aniso = f.Refinement == "anisotropic";
+    const std::string how = aniso ? (f.Relocated ? " (each remeshed by MMG3D from a uniform start, its vertices relocated)"
+                                                 : " (each remeshed by MMG3D from a uniform start)")
+                                  : (f.Relocated ? " (vertices relocated at each level)" : "");
+    std::printf("levels       %s%s\n", f.Nested ? "nested" : "not nested", how.c_str());
   }
   std::printf("time         %.2f s\n", f.BuildSeconds);
 }
