@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace art
@@ -17,6 +18,12 @@ namespace
 {
 bool Visible(const RenderSettings& s, double lo, double hi)
 {
+  // A NaN or infinite voxel is refused by the caster with its place; here it frames nothing
+  // (the transfer function's lookup is not defined there).
+  if (!std::isfinite(lo) || !std::isfinite(hi))
+  {
+    return false;
+  }
   if (lo > hi)
   {
     std::swap(lo, hi);

@@ -342,3 +342,10 @@ art_expect_test(cli.render_shade_no_voxel_error EXIT 0 STDOUT "no error figures:
   ARGS render "${_synthetic}/brain-like.vti" -o "${ART_TEST_OUTPUT}/shade.png" --size 32x32 --shade)
 art_expect_test(cli.render_shade_reference EXIT 2 STDERR "--shade: the voxel reference does not shade" ONE_LINE_STDERR
   ARGS render "${_synthetic}/brain-like.vti" -o "${ART_TEST_OUTPUT}/never.png" --reference --shade)
+# A volume with NaN voxels is refused with their count and place (the default framing crashed on
+# them before the caster could say so).
+file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/nan-3x3x3.nrrd" "NRRD0004\ntype: float\ndimension: 3\nsizes: 3 3 3\n"
+  "encoding: ascii\n\n0 0 0 0 0 0 0 0 0 0 0 0 0 1000 nan 0 0 0 0 0 0 0 0 0 0 0 0\n")
+art_expect_test(cli.render_nan_voxels EXIT 1 ONE_LINE_STDERR
+  STDERR "nan-3x3x3.nrrd: 1 voxel holds NaN or infinite values \\(the first at i, j, k = 2, 1, 1\\)"
+  ARGS render "${CMAKE_CURRENT_BINARY_DIR}/nan-3x3x3.nrrd" -o "${ART_TEST_OUTPUT}/never.png" --size 16x16 --no-error)
