@@ -349,3 +349,17 @@ file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/nan-3x3x3.nrrd" "NRRD0004\ntype: float\n
 art_expect_test(cli.render_nan_voxels EXIT 1 ONE_LINE_STDERR
   STDERR "nan-3x3x3.nrrd: 1 voxel holds NaN or infinite values \\(the first at i, j, k = 2, 1, 1\\)"
   ARGS render "${CMAKE_CURRENT_BINARY_DIR}/nan-3x3x3.nrrd" -o "${ART_TEST_OUTPUT}/never.png" --size 16x16 --no-error)
+# A slab a few voxels thin is reduced by bisection unless anisotropic is asked for (MMG took
+# 30-60 s on it, bisection 0.1 s), with a note.
+set(_slab "")
+foreach(_i RANGE 1199)
+  math(EXPR _x "(${_i} % 20) * (${_i} / 20 % 20)")
+  string(APPEND _slab "${_x} ")
+endforeach()
+file(WRITE "${CMAKE_CURRENT_BINARY_DIR}/slab-20x20x3.nrrd"
+  "NRRD0004\ntype: float\ndimension: 3\nsizes: 20 20 3\nencoding: ascii\n\n${_slab}\n")
+art_expect_test(cli.render_thin_slab_bisection EXIT 0
+  STDERR "note: reducing with bisection: the volume is 3 voxels thin"
+  STDOUT "least-squares reduction, vertices relocated, RMS"
+  ARGS render "${CMAKE_CURRENT_BINARY_DIR}/slab-20x20x3.nrrd" -o "${ART_TEST_OUTPUT}/slab.png" --size 16x16 --tets 300
+  --tf grey-ramp --no-error)

@@ -283,17 +283,31 @@ void AddNote(std::string& note, const std::string& text)
 #ifdef ART_HAVE_Reduction
 // The reduction `render` makes of a volume for its settings: weighted by what the transfer
 // function shows, vertices relocated unless there are iso-surfaces, clamped under MIP.
-art::ReducerOptions ReductionFor(const cli::Options& o, const art::RenderSettings& settings, long long voxels)
+art::ReducerOptions ReductionFor(const cli::Options& o, const art::RenderSettings& settings, const int dims[3])
 {
+  const long long voxels = static_cast<long long>(dims[0]) * dims[1] * dims[2];
   art::ReducerOptions ro;
   ro.Refine = cli::ParseRefinement(o.Get("refinement"), "--refinement");
-  std::string why;
   if (!o.Has("refinement") && ro.Refine == art::ReducerOptions::Refinement::Anisotropic &&
-    !art::MmgRemesher::Available(&why) && (o.Has("tets") || o.Has("max-error")))
+    (o.Has("tets") || o.Has("max-error")))
   {
-    std::fprintf(stderr, "adaptivert: note: reducing with bisection: anisotropic refinement needs MMG (%s)\n",
-      why.c_str());
-    ro.Refine = art::ReducerOptions::Refinement::Bisection;
+    // The default falls back to bisection where MMG cannot run, and on slabs a few voxels
+    // thin, where MMG took 30-60 s for what bisection makes in 0.1 s.
+    std::string why;
+    const int thinnest = std::min({ dims[0], dims[1], dims[2] });
+    if (!art::MmgRemesher::Available(&why))
+    {
+      why = "anisotropic refinement needs MMG (" + why + ")";
+    }
+    else if (thinnest < 8)
+    {
+      why = "the volume is " + std::to_string(thinnest) + " voxels thin; --refinement anisotropic remeshes it anyway, slowly";
+    }
+    if (!why.empty())
+    {
+      std::fprintf(stderr, "adaptivert: note: reducing with bisection: %s\n", why.c_str());
+      ro.Refine = art::ReducerOptions::Refinement::Bisection;
+    }
   }
   if (o.Has("tets"))
   {
@@ -327,7 +341,7 @@ art::ReducerOptions ReductionFor(const cli::Options& o, const art::RenderSetting
 // Reduces the scene's volume (or takes the mesh from --mesh-cache) and labels it.
 void ReduceVolume(const cli::Options& o, const std::string& input, Scene& sc, art::Progress& progress, cli::Json& j)
 {
-  art::ReducerOptions ro = ReductionFor(o, sc.settings, sc.volume->GetNumberOfPoints());
+  art::ReducerOptions ro = ReductionFor(o, sc.settings, sc.volume->GetDimensions());
   const art::VoxelVolume vv = art::VolumeFromImage(sc.volume, input);
   if (ro.TargetTets > 0)
   {
