@@ -344,7 +344,7 @@ ReducedMesh AnisotropicAdaptation::Fit(const Mesh& m, long long tets) const
   std::iota(all.begin(), all.end(), 0);
   fit.UpdateMoments(mesh, all);
   int iterations = fit.Solve(mesh, x, Opt.SolverTolerance);
-  const bool relocate = Opt.RelocateVertices && Volume.NumberOfVoxels() >= RelocateVoxelsPerTet * static_cast<double>(nt);
+  const bool relocate = Opt.RelocateVertices && Volume.NumberOfVoxels() >= Opt.RelocateVoxelsPerTet * static_cast<double>(nt);
   if (relocate)
   {
     iterations += Relocate(mesh, fit, x);

@@ -57,11 +57,6 @@ public:
   static double BytesPerVoxel() { return 40.0; }
   static double BytesPerTet() { return 900.0; }
 
-  /// With ReducerOptions::RelocateVertices, the vertices are relocated after the remeshing when
-  /// the tets hold at least this many voxels each on average: on finer meshes the fit already
-  /// passes near every voxel centre, and moves fitted the centres rather than the field between
-  /// them (images 0.7-3 dB worse, measured in tests/benchmarks/tets-results).
-  static constexpr double RelocateVoxelsPerTet = 20;
 
 private:
   struct Mesh

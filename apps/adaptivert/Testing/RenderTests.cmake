@@ -145,6 +145,11 @@ art_expect_test(cli.render_tets_relocates_by_default EXIT 0
 art_expect_test(cli.render_tets_relocate EXIT 0 STDOUT "least-squares reduction, vertices relocated, RMS error"
   ARGS render "${CMAKE_SOURCE_DIR}/data/ct-head-128.mha" -o "${_tmp}/reloc.png" --size 16x16 --tets 100 --plain-reduction
   --relocate --refinement bisection --no-error)
+# --relocate given relocates a fine anisotropic mesh too (it was dropped without a word).
+art_expect_test(cli.render_tets_fine_anisotropic_relocate EXIT 0
+  STDOUT "least-squares reduction, anisotropic \\(MMG3D\\), vertices relocated, RMS error"
+  ARGS render "${CMAKE_SOURCE_DIR}/tests/data/synthetic/brain-like.vti" -o "${_tmp}/fine-aniso-reloc.png" --size 16x16
+  --tets 10% --plain-reduction --relocate --no-error)
 # An anisotropic mesh whose tets hold fewer than 20 voxels each keeps MMG's vertices (relocation
 # there fitted the voxel centres, not the field between them) and says so.
 art_expect_test(cli.render_tets_fine_anisotropic_not_relocated EXIT 0

@@ -105,6 +105,7 @@ art::ReducerOptions OptionsBeforeLoading(const cli::Options& o)
   opt.RefineFraction = o.GetDouble("refine-fraction");
   opt.ClampToVoxels = o.Flag("clamp");
   opt.RelocateVertices = o.Flag("relocate");
+  opt.RelocateVoxelsPerTet = 0; // asked for: every mesh, however fine
   opt.SolverTolerance = o.GetDouble("tolerance");
   if (!(opt.RefineFraction >= 0.0 && opt.RefineFraction <= 4.0) || !(opt.SolverTolerance > 0 && opt.SolverTolerance < 1))
   {

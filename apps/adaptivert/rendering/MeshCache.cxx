@@ -181,7 +181,7 @@ MeshCache::MeshCache(const std::string& dir, const art::VoxelVolume& v, const ar
     << " " << o.RefineFraction << " " << o.SolverTolerance << " " << o.Regularization << " " << o.MinEdgeVoxels
     << " " << int(o.Refine) << " " << o.CoarseTets << " " << o.ClampToVoxels << " " << o.CapOpacity << " "
     << o.ImportanceFloor << " " << o.ImportanceRadius << " " << o.ReweighSteps << " " << o.RelocateVertices << " "
-    << o.RelocateSweeps << " " << o.RelocateQualityFloor << " metric " << o.Metric.Sigma << " " << o.Metric.TensorSigma
+    << o.RelocateSweeps << " " << o.RelocateQualityFloor << " " << o.RelocateVoxelsPerTet << " metric " << o.Metric.Sigma << " " << o.Metric.TensorSigma
     << " " << o.Metric.Exponent << " " << o.Metric.Hmin << " " << o.Metric.Hmax << " " << o.Metric.Floor << " "
     << o.MetricWeightExponent << " " << o.RemeshMovesVertices << " " << o.AdaptationRetries << " " << o.BudgetTolerance
     << " levels";
