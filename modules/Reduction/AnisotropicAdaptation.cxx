@@ -284,7 +284,8 @@ void AnisotropicAdaptation::Calibrate(const AdaptationRound& r)
   BoundaryTets = std::max(0.0, (TetsPerVertexInside * r.Vertices - r.Tets) / (c * c));
 }
 
-int AnisotropicAdaptation::Relocate(BisectionMesh& mesh, LeastSquaresFit& fit, std::vector<double>& x) const
+int AnisotropicAdaptation::Relocate(
+  BisectionMesh& mesh, LeastSquaresFit& fit, const std::vector<int>& all, std::vector<double>& x) const
 {
   // The metric aligns the tets with the voxels' curvature; relocation then moves each vertex to
   // where its star fits the voxels best (VertexRelocator), as on the lattice. Thin tets are the
@@ -294,9 +295,7 @@ int AnisotropicAdaptation::Relocate(BisectionMesh& mesh, LeastSquaresFit& fit, s
   ro.Sweeps = Opt.RelocateSweeps;
   ro.QualityFloor = std::min(Opt.RelocateQualityFloor, 0.05);
   ro.MeasureSse = false;
-  VertexRelocator::Relocate(mesh, Volume, x, ro, Importance, Prog);
-  std::vector<int> all(static_cast<size_t>(mesh.NumberOfTets()));
-  std::iota(all.begin(), all.end(), 0);
+  VertexRelocator::Relocate(mesh, Volume, x, ro, Importance, Prog); // moves vertices, keeps the tets
   fit.UpdateMoments(mesh, all);
   return fit.Solve(mesh, x, Opt.SolverTolerance);
 }
@@ -347,7 +346,7 @@ ReducedMesh AnisotropicAdaptation::Fit(const Mesh& m, long long tets) const
   const bool relocate = Opt.RelocateVertices && Volume.NumberOfVoxels() >= Opt.RelocateVoxelsPerTet * static_cast<double>(nt);
   if (relocate)
   {
-    iterations += Relocate(mesh, fit, x);
+    iterations += Relocate(mesh, fit, all, x);
   }
   const std::vector<double> y =
     OutputValues(mesh, fit, x, Opt.ClampToVoxels, Opt.CapOpacity ? Importance : nullptr);

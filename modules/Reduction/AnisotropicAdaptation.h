@@ -72,7 +72,8 @@ private:
   void Calibrate(const AdaptationRound& r);
   double VerticesFor(long long tets) const;
   ReducedMesh Fit(const Mesh& m, long long tets) const;
-  int Relocate(BisectionMesh& mesh, LeastSquaresFit& fit, std::vector<double>& x) const;
+  /// Relocates the vertices of the fitted `mesh` and refits `x` on `all` its tets; CG iterations.
+  int Relocate(BisectionMesh& mesh, LeastSquaresFit& fit, const std::vector<int>& all, std::vector<double>& x) const;
 
   const VoxelVolume& Volume;
   const ReducerOptions& Opt;

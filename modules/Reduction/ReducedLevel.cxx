@@ -24,6 +24,30 @@ std::vector<double> OutputValues(const BisectionMesh& mesh, const LeastSquaresFi
   return x;
 }
 
+void WritePositiveTet(std::array<int, 4> v, const std::vector<double>& points, int* out)
+{
+  const double* p[4];
+  for (int a = 0; a < 4; ++a)
+  {
+    p[a] = &points[3 * static_cast<size_t>(v[a])];
+  }
+  double e[3][3];
+  for (int a = 0; a < 3; ++a)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      e[a][d] = p[a + 1][d] - p[0][d];
+    }
+  }
+  const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+    e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+  if (det < 0)
+  {
+    std::swap(v[1], v[2]);
+  }
+  std::copy(v.begin(), v.end(), out);
+}
+
 ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const std::vector<double>& x,
   VoxelErrorReport e)
 {
@@ -47,27 +71,7 @@ ReducedMesh Snapshot(const VoxelVolume& vol, const BisectionMesh& mesh, const st
   out.Tets.resize(4 * static_cast<size_t>(nt));
   for (int t = 0; t < nt; ++t)
   {
-    auto v = mesh.Tet(t);
-    const double* p[4];
-    for (int a = 0; a < 4; ++a)
-    {
-      p[a] = &out.Points[3 * static_cast<size_t>(v[a])];
-    }
-    double e[3][3];
-    for (int a = 0; a < 3; ++a)
-    {
-      for (int d = 0; d < 3; ++d)
-      {
-        e[a][d] = p[a + 1][d] - p[0][d];
-      }
-    }
-    const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-      e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) + e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-    if (det < 0)
-    {
-      std::swap(v[1], v[2]); // VTK_TETRA wants (p1-p0)x(p2-p0).(p3-p0) > 0
-    }
-    std::copy(v.begin(), v.end(), out.Tets.begin() + 4 * static_cast<size_t>(t));
+    WritePositiveTet(mesh.Tet(t), out.Points, &out.Tets[4 * static_cast<size_t>(t)]);
   }
   out.Range[0] = vol.Range[0];
   out.Range[1] = vol.Range[1];

@@ -6,6 +6,7 @@
 #include "LeastSquaresFit.h"
 #include "MeanSpacing.h"
 #include "Progress.h"
+#include "ReducedLevel.h"
 #include "RegionSizing.h"
 
 #include <algorithm>
@@ -279,27 +280,7 @@ ReducedMesh Output(const VoxelVolume& geometry, const VoxelVolume& values, const
   out.Tets.resize(4 * nt);
   for (size_t t = 0; t < nt; ++t)
   {
-    std::array<int, 4> v = c.Mesh.Tets[t];
-    const double* p[4];
-    for (int a = 0; a < 4; ++a)
-    {
-      p[a] = &out.Points[3 * static_cast<size_t>(v[a])];
-    }
-    double e[3][3];
-    for (int a = 0; a < 3; ++a)
-    {
-      for (int d = 0; d < 3; ++d)
-      {
-        e[a][d] = p[a + 1][d] - p[0][d];
-      }
-    }
-    const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-      e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-    if (det < 0) // a direction matrix that mirrors
-    {
-      std::swap(v[1], v[2]);
-    }
-    std::copy(v.begin(), v.end(), out.Tets.begin() + 4 * static_cast<std::ptrdiff_t>(t));
+    WritePositiveTet(c.Mesh.Tets[t], out.Points, &out.Tets[4 * t]);
   }
   if (fit)
   {
