@@ -167,6 +167,7 @@ void RenderTile(const FrameContext& fc, const Rule& rule, const Tile& tile, Coun
     {
       const int x = back ? tile.x1 - 1 - (i - tile.x0) : i;
       ++c.rays;
+      ART_LEAVE_AVX();
       Ray r = cam.Generate(x, y);
       if (fc.ends)
       {
@@ -183,6 +184,7 @@ void RenderTile(const FrameContext& fc, const Rule& rule, const Tile& tile, Coun
       {
         pw.emplace(*fc.view, r);
       }
+      ART_LEAVE_AVX();
       TetRayCaster::Impl::Entries(fc, w, r, x, y, entries, hint, c, pw ? &*pw : nullptr);
       if (!entries.Front() && fc.eyeTet < 0)
       {
@@ -198,7 +200,9 @@ void RenderTile(const FrameContext& fc, const Rule& rule, const Tile& tile, Coun
       {
         Trace(fc, rule, w, w, r, fc.eyeTet, entries, res, c, nudges, from);
       }
-      fc.img.Set(x, y, { float(res.rgba[0]), float(res.rgba[1]), float(res.rgba[2]), float(res.rgba[3]) });
+      const std::array<float, 4> rgba{ float(res.rgba[0]), float(res.rgba[1]), float(res.rgba[2]), float(res.rgba[3]) };
+      ART_LEAVE_AVX();
+      fc.img.Set(x, y, rgba);
     }
   }
 }
