@@ -96,14 +96,27 @@ void OrderedHits::Finish()
 
 void SortAndMergeHits(const TriangleStore& s, std::vector<Hit>& hits, double tol)
 {
-  std::vector<Hit> all;
-  all.swap(hits);
-  OrderedHits merged(s, hits, tol);
-  std::sort(all.begin(), all.end(), Before);
-  for (const Hit& h : all)
+  // In place, so the caller's vector keeps its capacity from ray to ray: sort, then keep each hit
+  // that repeats none kept before it within tol (what OrderedHits does with one voxel).
+  std::sort(hits.begin(), hits.end(), Before);
+  size_t kept = 0;
+  for (size_t i = 0; i < hits.size(); ++i)
   {
-    merged.Add(h.t, h.u, h.v, static_cast<std::uint32_t>(h.record));
+    const Hit h = hits[i];
+    bool repeat = false;
+    for (size_t k = kept; k > 0 && h.t - hits[k - 1].t <= tol && !repeat; --k)
+    {
+      const Hit& other = hits[k - 1];
+      repeat = other.record == h.record ||
+        ShareVertex(s, s.Record(static_cast<size_t>(other.record)), s.Record(static_cast<size_t>(h.record)));
+    }
+    if (!repeat)
+    {
+      hits[kept] = h;
+      hits[kept].triangle = s.OriginalIndex(static_cast<size_t>(h.record));
+      ++kept;
+    }
   }
-  merged.Finish();
+  hits.resize(kept);
 }
 } // namespace art

@@ -1,7 +1,7 @@
 // OrderedHits: an all-hits list made final up to a distance at a time: EndVoxel(t) sorts the hits
 // added since (few) and appends those up to t; where a ray crosses an edge or vertex shared by
-// several triangles, one hit stands for the surface. SortAndMergeHits feeds it a whole sorted
-// list (the queries sort once at the end: emitting voxel by voxel cost more than it saved).
+// several triangles, one hit stands for the surface. The queries use SortAndMergeHits instead,
+// the same merge done once, in place, at the end (emitting voxel by voxel cost more than it saved).
 #ifndef art_OrderedHits_h
 #define art_OrderedHits_h
 
