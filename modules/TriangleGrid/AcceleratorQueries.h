@@ -215,7 +215,7 @@ public:
       return false;
     };
     static_cast<const Derived*>(this)->Walk(p, r.tmin, r.tmax, visit, c);
-    SortAndMergeHits(*S, hits, 1e-7 * S->Bounds().Diagonal() * p.invLen);
+    SortAndMergeHits(*S, hits, 1e-7 * S->Bounds().Diagonal() * p.InvLength());
     c.hits += hits.empty() ? 0 : 1;
   }
 

@@ -23,7 +23,6 @@ struct RayPrep
 {
   double org[3], dir[3], inv[3];
   ShearedRay s; ///< what the triangle test needs
-  double invLen = 1; ///< 1 / |dir|
 
   explicit RayPrep(const Ray& r)
   {
@@ -40,9 +39,12 @@ struct RayPrep
     {
       std::swap(kx, ky); // keep the winding, so the sign of det says which side was hit
     }
-    s = ShearedRay{ org[kx], org[ky], org[kz], dir[kx] / dir[kz], dir[ky] / dir[kz], 1.0 / dir[kz], kx, ky, kz };
-    invLen = 1.0 / std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    // 1 / dir[kz] is inv[kz]: one division fewer per ray.
+    s = ShearedRay{ org[kx], org[ky], org[kz], dir[kx] / dir[kz], dir[ky] / dir[kz], inv[kz], kx, ky, kz };
   }
+
+  /// 1 / |dir| (only all-hits queries need it).
+  double InvLength() const { return 1.0 / std::sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]); }
 
   /// Clips [tmin, tmax] to the box as Box3::Clip does (a zero direction component keeps the
   /// interval when the origin lies within that slab). False when the ray misses it.
@@ -162,7 +164,9 @@ inline int AllOfBatch(const ShearedRay& r, const TriangleRecord* rec, const floa
 /// Culls the triangles of a shared plane with one ray/plane distance: when the ray crosses the
 /// plane outside [lo, hi] (by more than a margin of 1e-5 of the scene's diagonal, far above the
 /// coplanarity tolerance and the float plane's rounding), none of them can be hit in [lo, hi].
-/// The last plane's answer is kept while `hi` stays the same.
+/// The crossing tp = num / den is kept as num sign(den) and |den|, so that a test against a
+/// shrinking hi is two products and no division: tp > hi + M / |den| is num s > hi |den| + M.
+/// A ray parallel to the plane (den = 0) culls nothing.
 class PlaneCull
 {
 public:
@@ -178,20 +182,21 @@ public:
     {
       return false;
     }
-    if (plane != Last || hi != Hi)
+    if (plane != Last)
     {
       Last = plane;
-      Hi = hi;
       const PlaneRecord& pl = Planes[plane];
       const double den = double(pl.n[0]) * P.dir[0] + double(pl.n[1]) * P.dir[1] + double(pl.n[2]) * P.dir[2];
       const double num = double(pl.d) - (double(pl.n[0]) * P.org[0] + double(pl.n[1]) * P.org[1] + double(pl.n[2]) * P.org[2]);
-      Out = false;
-      if (den != 0.0)
-      {
-        const double tp = num / den, margin = Margin / std::fabs(den);
-        Out = tp > hi + margin || tp < lo - margin;
-      }
+      AbsDen = std::fabs(den);
+      Num = den > 0 ? num : (den < 0 ? -num : 0.0);
     }
+    else if (hi == Hi)
+    {
+      return Out; // the next triangle of the same plane
+    }
+    Hi = hi;
+    Out = Num > hi * AbsDen + Margin || Num < lo * AbsDen - Margin;
     return Out;
   }
 
@@ -200,7 +205,7 @@ private:
   const RayPrep& P;
   double Margin;
   std::uint32_t Last = TriangleRecord::NoPlane;
-  double Hi = 0;
+  double Num = 0, AbsDen = 0, Hi = 0;
   bool Out = false;
 };
 
