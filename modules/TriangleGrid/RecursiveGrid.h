@@ -141,10 +141,11 @@ protected:
     for (;;)
     {
       ++visited;
-      // The axis of the nearest crossing from a table, without a branch: the choice of
-      // tNext[0] < tNext[1] ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2).
-      static constexpr signed char AxisOf[8] = { 2, 2, 2, 0, 1, 2, 1, 0 };
-      const int a = AxisOf[int(tNext[0] < tNext[1]) | int(tNext[0] < tNext[2]) << 1 | int(tNext[1] < tNext[2]) << 2];
+      // The axis of the nearest crossing, tNext[0] < tNext[1] ? (tNext[0] < tNext[2] ? 0 : 2) :
+      // (tNext[1] < tNext[2] ? 1 : 2), as two compares and selects (a min and a move), no branch.
+      const bool first = tNext[0] < tNext[1];
+      const double near01 = first ? tNext[0] : tNext[1];
+      const int a = near01 < tNext[2] ? (first ? 0 : 1) : 2;
       const double tExit = std::min(tNext[a], t1);
       const std::uint64_t w = words[idx >> 6], bit = 1ull << (idx & 63);
       if (w & bit)
