@@ -123,11 +123,12 @@ protected:
       const double d = p.dir[a];
       const int k = CellOf((p.org[a] + d * t0 - lo[a]) * ics[a], n[a]);
       i[a] = k;
-      tDelta[a] = d == 0.0 ? std::numeric_limits<double>::infinity() : std::fabs(cs[a] * p.inv[a]);
+      // cs |inv| is |cs inv| exactly, and infinite where d = 0 (inv is then infinite).
+      tDelta[a] = cs[a] * std::fabs(p.inv[a]);
       step[a] = d > 0 ? 1 : (d < 0 ? -1 : 0);
       out[a] = d > 0 ? n[a] : -1;
-      tNext[a] = d > 0 ? (lo[a] + (k + 1) * cs[a] - p.org[a]) * p.inv[a]
-                       : (d < 0 ? (lo[a] + k * cs[a] - p.org[a]) * p.inv[a] : std::numeric_limits<double>::infinity());
+      const double side = (lo[a] + (k + (d > 0 ? 1 : 0)) * cs[a] - p.org[a]) * p.inv[a];
+      tNext[a] = d != 0.0 ? side : std::numeric_limits<double>::infinity();
     }
     // The linear cell index moves by a per-axis stride; an empty cell costs a bit test.
     const long long stride[3] = { step[0], static_cast<long long>(step[1]) * n[0],
