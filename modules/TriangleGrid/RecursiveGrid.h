@@ -46,7 +46,7 @@ public:
     {
       return;
     }
-    Lists.With([&](const auto* lists) { WalkGrid(lists, 0, 0, TopLo, t0, t1, p, visit, c); });
+    Lists.With([&](const auto* lists) { WalkGrid<0>(lists, 0, 0, TopLo, t0, t1, p, visit, c); });
   }
 
   /// Nearest-point walk (see AcceleratorQueries.h): rings of growing radius around x's cell.
@@ -110,11 +110,15 @@ protected:
   /// next crossing, its step in t and in the linear cell index, and how many cells are left
   /// before the grid's side are kept in registers; the axis of the nearest crossing is taken as
   /// tNext[0] < tNext[1] ? (tNext[0] < tNext[2] ? 0 : 2) : (tNext[1] < tNext[2] ? 1 : 2).
-  template <class Id, class Visitor>
+  /// Fixed > 0: a subgrid of Fixed^3 cells (the default N = 4), its sizes known to the compiler,
+  /// and, being at most 64 cells, its occupancy one word loaded once.
+  template <int Fixed, class Id, class Visitor>
   bool WalkGrid(const Id* lists, std::uint32_t block, int depth, const double lo[3], double t0, double t1,
     const RayPrep& p, Visitor& visit, Counters& c) const
   {
-    const int* n = Dims(depth);
+    constexpr bool OneWord = Fixed > 0 && Fixed * Fixed * Fixed <= 64;
+    const int* dims = Dims(depth);
+    const int n[3] = { Fixed > 0 ? Fixed : dims[0], Fixed > 0 ? Fixed : dims[1], Fixed > 0 ? Fixed : dims[2] };
     const double *cs = Cs[depth], *ics = InvCs[depth];
     int i[3], step[3], out[3];
     double tNext[3], tDelta[3];
@@ -136,6 +140,7 @@ protected:
     long long idx = (static_cast<long long>(i[2]) * n[1] + i[1]) * n[0] + i[0];
     const std::uint64_t* words = Words.data() + block;
     const std::uint32_t* rank = Rank.data() + block;
+    const std::uint64_t word0 = OneWord ? words[0] : 0;
     double tEnter = t0;
     std::uint64_t visited = 0;
     bool stop = false;
@@ -148,15 +153,16 @@ protected:
       const double near01 = first ? tNext[0] : tNext[1];
       const int a = near01 < tNext[2] ? (first ? 0 : 1) : 2;
       const double tExit = std::min(tNext[a], t1);
-      const std::uint64_t w = words[idx >> 6], bit = 1ull << (idx & 63);
+      const std::uint64_t w = OneWord ? word0 : words[idx >> 6], bit = 1ull << (idx & 63);
       if (w & bit)
       {
-        const std::uint32_t e = Entries[rank[idx >> 6] + PopCount(w & (bit - 1))];
+        const std::uint32_t e = Entries[(OneWord ? rank[0] : rank[idx >> 6]) + PopCount(w & (bit - 1))];
         if (e & Child)
         {
           const double clo[3] = { lo[0] + i[0] * cs[0], lo[1] + i[1] * cs[1], lo[2] + i[2] * cs[2] };
           if (Sub == 2 ? WalkOctants(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c)
-                       : WalkGrid(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c))
+                       : Sub == 4 ? WalkGrid<4>(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c)
+                                  : WalkGrid<0>(lists, e & ~Child, depth + 1, clo, tEnter, tExit, p, visit, c))
           {
             stop = true;
             break;
