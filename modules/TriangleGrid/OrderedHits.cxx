@@ -31,6 +31,26 @@ bool ShareVertex(const TriangleStore& s, const TriangleRecord& a, const Triangle
   return false;
 }
 
+namespace
+{
+// Whether h repeats one of the first n hits of `kept` (sorted by t): one within tol on the same
+// triangle or on one sharing a vertex with it (a ray through a shared edge or vertex meets
+// several). Every kept hit within tol is looked at: a vertex may be shared by many triangles.
+bool RepeatsKept(const TriangleStore& s, const std::vector<Hit>& kept, size_t n, const Hit& h, double tol)
+{
+  for (size_t k = n; k > 0 && h.t - kept[k - 1].t <= tol; --k)
+  {
+    const Hit& other = kept[k - 1];
+    if (other.record == h.record ||
+      ShareVertex(s, s.Record(static_cast<size_t>(other.record)), s.Record(static_cast<size_t>(h.record))))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
 OrderedHits::OrderedHits(const TriangleStore& s, std::vector<Hit>& out, double tol)
   : S(s)
   , Out(out)
@@ -42,17 +62,7 @@ OrderedHits::OrderedHits(const TriangleStore& s, std::vector<Hit>& out, double t
 
 bool OrderedHits::Repeat(const Hit& h) const
 {
-  // Every kept hit within tol (a vertex may be shared by many triangles).
-  for (size_t k = Emitted; k > 0 && h.t - Out[k - 1].t <= Tol; --k)
-  {
-    const Hit& kept = Out[k - 1];
-    if (kept.record == h.record ||
-      ShareVertex(S, S.Record(static_cast<size_t>(kept.record)), S.Record(static_cast<size_t>(h.record))))
-    {
-      return true;
-    }
-  }
-  return false;
+  return RepeatsKept(S, Out, Emitted, h, Tol);
 }
 
 void OrderedHits::EndVoxel(double tExit)
@@ -97,20 +107,13 @@ void OrderedHits::Finish()
 void SortAndMergeHits(const TriangleStore& s, std::vector<Hit>& hits, double tol)
 {
   // In place, so the caller's vector keeps its capacity from ray to ray: sort, then keep each hit
-  // that repeats none kept before it within tol (what OrderedHits does with one voxel).
+  // that repeats none kept before it (RepeatsKept, as OrderedHits does with one voxel).
   std::sort(hits.begin(), hits.end(), Before);
   size_t kept = 0;
   for (size_t i = 0; i < hits.size(); ++i)
   {
     const Hit h = hits[i];
-    bool repeat = false;
-    for (size_t k = kept; k > 0 && h.t - hits[k - 1].t <= tol && !repeat; --k)
-    {
-      const Hit& other = hits[k - 1];
-      repeat = other.record == h.record ||
-        ShareVertex(s, s.Record(static_cast<size_t>(other.record)), s.Record(static_cast<size_t>(h.record)));
-    }
-    if (!repeat)
+    if (!RepeatsKept(s, hits, kept, h, tol))
     {
       hits[kept] = h;
       hits[kept].triangle = s.OriginalIndex(static_cast<size_t>(h.record));
